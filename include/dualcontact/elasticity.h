@@ -1,0 +1,101 @@
+// Linear elasticity: assembly of the stiffness matrix A, the load vector b
+// and the L2 mass matrix M, and the CG + algebraic-multigrid solver whose
+// near-null space holds all rigid-body modes.
+#ifndef dualcontact_elasticity_h
+#define dualcontact_elasticity_h
+
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dualcontact/scene.h>
+
+#include <Epetra_MultiVector.h>
+
+#include <memory>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * Assemble the stiffness matrix A of a(u,v) = int sigma(u):eps(v) and the
+   * load vector b = int f.v + int_{Gamma_N} T.v, with the constraints
+   * (hanging nodes, Dirichlet, sliders) applied. Loads the scene does not
+   * have are not assembled. The matrix must already have its sparsity pattern.
+   */
+  template <int dim>
+  void
+  assemble_elasticity(const Mapping<dim>               &mapping,
+                      const DoFHandler<dim>            &dof_handler,
+                      const Scene<dim>                 &scene,
+                      const AffineConstraints<double>  &constraints,
+                      TrilinosWrappers::SparseMatrix   &system_matrix,
+                      TrilinosWrappers::MPI::Vector    &system_rhs);
+
+  /**
+   * The rigid-body modes of the displacement space (dim translations and
+   * dim(dim-1)/2 rotations; only the translations if `with_rotations` is
+   * false), as columns of an Epetra_MultiVector over the matrix' row map.
+   * Rotations are taken about `center` and scaled by 1/`length`.
+   */
+  template <int dim>
+  std::unique_ptr<Epetra_MultiVector>
+  rigid_body_modes(const Mapping<dim>                   &mapping,
+                   const DoFHandler<dim>                &dof_handler,
+                   const TrilinosWrappers::SparseMatrix &matrix,
+                   const bool                            with_rotations,
+                   const Point<dim>                     &center,
+                   const double                          length);
+
+  /**
+   * CG preconditioned by Trilinos ML smoothed-aggregation AMG. The AMG
+   * hierarchy is built by `initialize` and reused by every `solve` until the
+   * next `initialize`.
+   */
+  template <int dim>
+  class ElasticSolver
+  {
+  public:
+    explicit ElasticSolver(const SolverParameters &parameters);
+
+    /** Build the AMG hierarchy for `matrix`, with the rigid-body modes. */
+    void
+    initialize(const Mapping<dim>                   &mapping,
+               const DoFHandler<dim>                &dof_handler,
+               const TrilinosWrappers::SparseMatrix &matrix,
+               const Point<dim>                     &center,
+               const double                          length);
+
+    /**
+     * Solve matrix x = rhs by CG to the relative tolerance `tolerance` (the
+     * parameter's value if zero), starting from x. Returns the number of CG
+     * iterations. Throws if CG does not converge.
+     */
+    unsigned int
+    solve(const TrilinosWrappers::SparseMatrix &matrix,
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &rhs,
+          const double                          tolerance = 0.) const;
+
+    bool
+    initialized() const
+    {
+      return preconditioner != nullptr;
+    }
+
+  private:
+    const SolverParameters                              &parameters;
+    std::unique_ptr<Epetra_MultiVector>                  modes;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG>   preconditioner;
+  };
+} // namespace dualcontact
+
+#endif

@@ -1,0 +1,43 @@
+// Errors in the user's input, and the exit status each kind ends the program with.
+#ifndef dualcontact_input_error_h
+#define dualcontact_input_error_h
+
+#include <stdexcept>
+#include <string>
+
+namespace dualcontact
+{
+  /**
+   * Exit status of the program `dualcontact`. Every kind of bad input has its
+   * own code so that scripts (and the tests) can tell them apart.
+   */
+  enum ExitCode : int
+  {
+    exit_success          = 0,
+    exit_runtime_failure  = 1, // a solver failed, an internal error
+    exit_usage            = 2, // wrong command line
+    exit_cannot_read_file = 3, // parameter file missing or unreadable
+    exit_unknown_entry    = 4, // unknown entry/subsection, malformed line
+    exit_invalid_value    = 5, // a value that does not match its pattern or range
+    exit_inconsistent     = 6, // entries that contradict each other
+    exit_no_equilibrium   = 7  // a load the foundation cannot hold
+  };
+
+  /**
+   * Thrown for anything wrong with the input: the message names the entry or
+   * the cause in one sentence, the exit code says which kind of error it is.
+   * Thrown before any output file is written.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    InputError(const std::string &message, const ExitCode code)
+      : std::runtime_error(message)
+      , code(code)
+    {}
+
+    const ExitCode code;
+  };
+} // namespace dualcontact
+
+#endif

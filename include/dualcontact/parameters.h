@@ -1,0 +1,234 @@
+// All run-time parameters of a dualcontact scene: one struct per subsection of
+// the .prm file, each declaring its entries (pattern, default, help text with
+// units) right beside the code that parses them.
+#ifndef dualcontact_parameters_h
+#define dualcontact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dualcontact
+{
+  using dealii::ParameterHandler;
+  using dealii::types::boundary_id;
+
+  enum class GeometryType
+  {
+    rectangle,
+    half_disc
+  };
+
+  /** The condition on one part of the boundary (DESIGN.md §1). */
+  enum class BoundaryCondition
+  {
+    free,         // zero traction
+    fixed,        // all displacement components prescribed (Gamma_D)
+    normal_fixed, // v.n = 0, tangential part free: a frictionless slider (Gamma_0)
+    traction,     // traction vector prescribed (Gamma_N)
+    contact       // unilateral contact with the rigid foundation (Gamma_C)
+  };
+
+  enum class FrictionLaw
+  {
+    none,
+    given,
+    coulomb
+  };
+
+  enum class RefinementStrategy
+  {
+    global
+  };
+
+  std::string
+  to_string(const BoundaryCondition condition);
+
+  /** Geometry and initial mesh. */
+  struct GeometryParameters
+  {
+    unsigned int        dimension = 2;
+    GeometryType        type      = GeometryType::rectangle;
+    std::vector<double> lower_left;
+    std::vector<double> upper_right;
+    std::vector<unsigned int> subdivisions;
+    std::vector<double>       center;
+    double                    radius = 1.;
+    unsigned int              pre_refinement_steps    = 0;
+    double                    pre_refinement_distance = 0.;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Isotropic linear elasticity; plane strain in 2D. */
+  struct MaterialParameters
+  {
+    double youngs_modulus  = 1.;
+    double poissons_ratio = 0.3;
+
+    double
+    lambda() const;
+    double
+    mu() const;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Which condition holds on which boundary id, with its data. */
+  struct BoundaryParameters
+  {
+    std::map<boundary_id, BoundaryCondition> conditions;
+    std::map<boundary_id, std::string>       displacements; // "u_x; u_y"
+    std::map<boundary_id, std::string>       tractions;     // "T_x; T_y"
+
+    BoundaryCondition
+    condition(const boundary_id id) const;
+    std::vector<boundary_id>
+    ids_with(const BoundaryCondition condition) const;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Volume loads. */
+  struct LoadParameters
+  {
+    std::string body_force;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** The rigid foundation: a half-space through a point with a unit normal. */
+  struct FoundationParameters
+  {
+    std::vector<double> point;
+    std::vector<double> normal;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Friction law on the contact boundary. */
+  struct FrictionParameters
+  {
+    FrictionLaw law = FrictionLaw::none;
+    std::string coefficient;
+    std::string threshold;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** The linear solver (CG + algebraic multigrid). */
+  struct SolverParameters
+  {
+    double       linear_tolerance      = 1e-10;
+    unsigned int max_linear_iterations = 2000;
+    bool         amg_rotation_modes    = true;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** The sequence of meshes. */
+  struct RefinementParameters
+  {
+    unsigned int       initial_global_refinement = 0;
+    unsigned int       n_cycles                  = 1;
+    RefinementStrategy strategy                  = RefinementStrategy::global;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** What is written where. */
+  struct OutputParameters
+  {
+    std::string directory = "output";
+    bool        write_vtu = true;
+    bool        print_timing = true;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** An exact solution, if the scene has one: errors are then reported. */
+  struct ExactSolutionParameters
+  {
+    std::string displacement; // empty: none known
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * All parameters of a run. `declare_parameters` fills a ParameterHandler,
+   * `parse_parameters` reads it back and checks the entries against each other
+   * (throwing InputError naming the entry on any inconsistency).
+   */
+  struct Parameters
+  {
+    GeometryParameters      geometry;
+    MaterialParameters      material;
+    BoundaryParameters      boundary;
+    LoadParameters          loads;
+    FoundationParameters    foundation;
+    FrictionParameters      friction;
+    SolverParameters        solver;
+    RefinementParameters    refinement;
+    OutputParameters        output;
+    ExactSolutionParameters exact;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Read a .prm file; InputError with the matching exit code on failure. */
+    void
+    read_file(const std::string &filename);
+    /** Read parameters from a string in .prm syntax (for tests, tutorials). */
+    void
+    read_string(const std::string &text);
+
+    /** Cross-checks of entries against each other; throws InputError. */
+    void
+    check_consistency() const;
+  };
+
+  /** The default parameter file, with every help text, as a string. */
+  std::string
+  default_parameter_file();
+
+  /** True if every component of the "a; b; c" expression is the number 0. */
+  bool
+  is_zero_expression(const std::string &expression);
+} // namespace dualcontact
+
+#endif

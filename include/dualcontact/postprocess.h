@@ -1,0 +1,70 @@
+// Quantities derived from the displacement: stress and von Mises stress for
+// the graphical output, and errors against an exact solution.
+#ifndef dualcontact_postprocess_h
+#define dualcontact_postprocess_h
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <dualcontact/parameters.h>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * Cauchy stress sigma = lambda tr(eps) I + 2 mu eps as a tensor field, and
+   * the von Mises stress. In 2D (plane strain) the out-of-plane stress
+   * sigma_zz = lambda tr(eps) enters the von Mises stress.
+   */
+  template <int dim>
+  class StressPostprocessor : public DataPostprocessor<dim>
+  {
+  public:
+    explicit StressPostprocessor(const MaterialParameters &material);
+
+    void
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<dim> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+
+    UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const double lambda;
+    const double mu;
+  };
+
+  /** The norms of u - u_exact (or of u itself without an exact solution). */
+  struct ErrorNorms
+  {
+    double l2 = 0.;       // ||u - u_exact||_L2
+    double h1_semi = 0.;  // |u - u_exact|_H1
+    double u_l2 = 0.;     // ||u||_L2
+  };
+
+  /**
+   * Integrate the error of the ghosted `solution` against `exact` (nullptr:
+   * only ||u||_L2 is computed), with a Gauss rule of degree + 2 points.
+   */
+  template <int dim>
+  ErrorNorms
+  compute_error_norms(const Mapping<dim>                  &mapping,
+                      const DoFHandler<dim>               &dof_handler,
+                      const TrilinosWrappers::MPI::Vector &solution,
+                      const Function<dim>                 *exact);
+} // namespace dualcontact
+
+#endif

@@ -1,0 +1,122 @@
+// A scene: the body's geometry and mesh, which condition holds on which
+// boundary part, the loads as functions, the foundation, and from all of that
+// the list of effects the solver has to simulate (DESIGN.md §4).
+#ifndef dualcontact_scene_h
+#define dualcontact_scene_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <dualcontact/parameters.h>
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /** What a scene calls for; the solver composes only these. */
+  struct Effects
+  {
+    bool        contact    = false;
+    FrictionLaw friction   = FrictionLaw::none;
+    bool        body_force = false;
+    bool        tractions  = false;
+
+    /** One line per effect, saying what runs and what does not. */
+    std::string
+    describe() const;
+  };
+
+  template <int dim>
+  class Scene
+  {
+  public:
+    /**
+     * Build every function the scene needs from the parameters. Throws
+     * InputError naming the entry if an expression does not parse.
+     */
+    explicit Scene(const Parameters &parameters);
+
+    /** Coarse mesh, manifolds, initial global refinement, pre-refinement. */
+    void
+    create_mesh(parallel::distributed::Triangulation<dim> &triangulation) const;
+
+    /**
+     * Throw InputError if the scene leaves a rigid motion free and nothing
+     * (no contact boundary) could hold it: the elastic problem would then
+     * be singular. Semi-coercive scenes with contact are allowed.
+     */
+    void
+    check_rigid_motions(
+      const parallel::distributed::Triangulation<dim> &triangulation) const;
+
+    const Effects &
+    effects() const
+    {
+      return effects_;
+    }
+
+    /** Boundary ids carrying each condition. */
+    std::set<types::boundary_id>
+    ids_with(const BoundaryCondition condition) const;
+
+    /** Prescribed displacement on a 'fixed' id (zero if none was given). */
+    const Function<dim> &
+    displacement(const types::boundary_id id) const;
+    /** Traction on a 'traction' id, or nullptr if it is zero. */
+    const Function<dim> *
+    traction(const types::boundary_id id) const;
+    /** Body force, or nullptr if the scene has none. */
+    const Function<dim> *
+    body_force() const
+    {
+      return body_force_.get();
+    }
+    /** Exact displacement, or nullptr if none is known. */
+    const Function<dim> *
+    exact_displacement() const
+    {
+      return exact_.get();
+    }
+
+    /** Foundation: a point on its boundary and the unit normal into the body. */
+    Point<dim>     foundation_point;
+    Tensor<1, dim> foundation_normal;
+
+    /** Signed distance of x from the foundation plane: g0 = (x - p).m */
+    double
+    initial_gap(const Point<dim> &x) const
+    {
+      return (x - foundation_point) * foundation_normal;
+    }
+
+    /** A point in the middle of the body (the rectangle's centre, the
+     * disc's centre): rotations are taken about it. */
+    Point<dim>
+    center() const;
+
+    /** A length that characterises the body (for relative measures): the
+     * rectangle's longest side, the disc's radius. */
+    double
+    characteristic_length() const;
+
+    const Parameters &parameters;
+
+  private:
+    Effects effects_;
+    std::map<types::boundary_id, std::unique_ptr<Function<dim>>> displacements;
+    std::map<types::boundary_id, std::unique_ptr<Function<dim>>> tractions;
+    std::unique_ptr<Function<dim>>                               body_force_;
+    std::unique_ptr<Function<dim>>                               exact_;
+    Functions::ZeroFunction<dim> zero{dim};
+  };
+} // namespace dualcontact
+
+#endif

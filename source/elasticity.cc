@@ -1,0 +1,270 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <dualcontact/elasticity.h>
+
+#include <Epetra_Map.h>
+#include <Teuchos_ParameterList.hpp>
+
+namespace dualcontact
+{
+  template <int dim>
+  void
+  assemble_elasticity(const Mapping<dim>              &mapping,
+                      const DoFHandler<dim>           &dof_handler,
+                      const Scene<dim>                &scene,
+                      const AffineConstraints<double> &constraints,
+                      TrilinosWrappers::SparseMatrix  &system_matrix,
+                      TrilinosWrappers::MPI::Vector   &system_rhs)
+  {
+    const FiniteElement<dim> &fe     = dof_handler.get_fe();
+    const double              lambda = scene.parameters.material.lambda();
+    const double              mu     = scene.parameters.material.mu();
+
+    const QGauss<dim>     quadrature(fe.degree + 1);
+    const QGauss<dim - 1> face_quadrature(fe.degree + 1);
+    FEValues<dim>         fe_values(mapping,
+                            fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>     fe_face_values(mapping,
+                                     fe,
+                                     face_quadrature,
+                                     update_values | update_quadrature_points |
+                                       update_JxW_values);
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    Vector<double>     cell_rhs(dofs_per_cell);
+    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
+
+    const FEValuesExtractors::Vector          displacement(0);
+    std::vector<SymmetricTensor<2, dim>>      eps(dofs_per_cell);
+    std::vector<double>                       div(dofs_per_cell);
+    std::vector<Vector<double>>               load_values(quadrature.size(),
+                                                Vector<double>(dim));
+    std::vector<Vector<double>> traction_values(face_quadrature.size(),
+                                                Vector<double>(dim));
+    const Function<dim> *body_force = scene.body_force();
+    const auto traction_ids = scene.ids_with(BoundaryCondition::traction);
+
+    system_matrix = 0;
+    system_rhs    = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_matrix = 0;
+          cell_rhs    = 0;
+          if (body_force != nullptr)
+            body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                          load_values);
+
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  div[i] = trace(eps[i]);
+                }
+              const double JxW = fe_values.JxW(q);
+              // sigma(u):eps(v) = lambda div u div v + 2 mu eps(u):eps(v)
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  for (unsigned int j = 0; j <= i; ++j)
+                    cell_matrix(i, j) +=
+                      (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
+                      JxW;
+                  if (body_force != nullptr)
+                    {
+                      const unsigned int c = fe.system_to_component_index(i).first;
+                      cell_rhs(i) += load_values[q](c) *
+                                     fe_values.shape_value(i, q) * JxW;
+                    }
+                }
+            }
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
+
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && traction_ids.count(face->boundary_id()))
+              if (const Function<dim> *traction =
+                    scene.traction(face->boundary_id()))
+                {
+                  fe_face_values.reinit(cell, face);
+                  traction->vector_value_list(
+                    fe_face_values.get_quadrature_points(), traction_values);
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      {
+                        const unsigned int c =
+                          fe.system_to_component_index(i).first;
+                        cell_rhs(i) += traction_values[q](c) *
+                                       fe_face_values.shape_value(i, q) *
+                                       fe_face_values.JxW(q);
+                      }
+                }
+
+          cell->get_dof_indices(local_dof_indices);
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 cell_rhs,
+                                                 local_dof_indices,
+                                                 system_matrix,
+                                                 system_rhs);
+        }
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  std::unique_ptr<Epetra_MultiVector>
+  rigid_body_modes(const Mapping<dim>                   &mapping,
+                   const DoFHandler<dim>                &dof_handler,
+                   const TrilinosWrappers::SparseMatrix &matrix,
+                   const bool                            with_rotations,
+                   const Point<dim>                     &center,
+                   const double                          length)
+  {
+    const unsigned int n_rotations = with_rotations ? dim * (dim - 1) / 2 : 0;
+    const unsigned int n_modes     = dim + n_rotations;
+    const Epetra_Map  &map         = matrix.trilinos_matrix().RowMap();
+    auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
+
+    const FiniteElement<dim>      &fe = dof_handler.get_fe();
+    const std::vector<Point<dim>> &unit_points = fe.get_unit_support_points();
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int i = 0; i < dof_indices.size(); ++i)
+            {
+              const int local = map.LID(static_cast<TrilinosWrappers::types::int_type>(
+                dof_indices[i]));
+              if (local < 0)
+                continue; // owned by another rank
+              const unsigned int   c = fe.system_to_component_index(i).first;
+              const Tensor<1, dim> r =
+                (mapping.transform_unit_to_real_cell(cell, unit_points[i]) -
+                 center) /
+                length;
+              (*modes)[c][local] = 1.;
+              // rotation k in the plane (a, b): u_a = -r_b, u_b = r_a
+              for (unsigned int k = 0; k < n_rotations; ++k)
+                {
+                  const unsigned int a = (dim == 2) ? 0 : (k == 2 ? 1 : 0);
+                  const unsigned int b = (dim == 2) ? 1 : (k == 0 ? 1 : 2);
+                  (*modes)[dim + k][local] = (c == a) ? -r[b] :
+                                             (c == b) ? r[a] :
+                                                        0.;
+                }
+            }
+        }
+    return modes;
+  }
+
+  template <int dim>
+  ElasticSolver<dim>::ElasticSolver(const SolverParameters &parameters)
+    : parameters(parameters)
+  {}
+
+  template <int dim>
+  void
+  ElasticSolver<dim>::initialize(const Mapping<dim>                   &mapping,
+                                 const DoFHandler<dim>                &dof_handler,
+                                 const TrilinosWrappers::SparseMatrix &matrix,
+                                 const Point<dim>                     &center,
+                                 const double                          length)
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = dof_handler.get_fe().degree > 1;
+    data.smoother_sweeps       = 2;
+    data.aggregation_threshold = 0.02;
+
+    // deal.II 9.4 only hands ML the translations; give it the rotations too
+    // through ML's own "null space" parameters (DESIGN.md §7).
+    Teuchos::ParameterList              list;
+    std::unique_ptr<Epetra_MultiVector> unused;
+    data.set_parameters(list, unused, matrix);
+    modes = rigid_body_modes(mapping,
+                             dof_handler,
+                             matrix,
+                             parameters.amg_rotation_modes,
+                             center,
+                             length);
+    list.set("null space: type", "pre-computed");
+    list.set("null space: dimension", modes->NumVectors());
+    list.set("null space: vectors", modes->Values());
+
+    preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    preconditioner->initialize(matrix, list);
+  }
+
+  template <int dim>
+  unsigned int
+  ElasticSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                            TrilinosWrappers::MPI::Vector        &x,
+                            const TrilinosWrappers::MPI::Vector  &rhs,
+                            const double                          tolerance) const
+  {
+    Assert(preconditioner != nullptr, ExcMessage("initialize() first"));
+    const double relative =
+      tolerance > 0 ? tolerance : parameters.linear_tolerance;
+    const double rhs_norm = rhs.l2_norm();
+    if (rhs_norm == 0.)
+      {
+        x = 0;
+        return 0;
+      }
+    SolverControl control(parameters.max_linear_iterations,
+                          relative * rhs_norm,
+                          /*log_history=*/false,
+                          /*log_result=*/false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(matrix, x, rhs, *preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &exc)
+      {
+        AssertThrow(false,
+                    ExcMessage("CG did not converge in " +
+                               std::to_string(exc.last_step) +
+                               " iterations (residual " +
+                               std::to_string(exc.last_residual) +
+                               ", wanted " + std::to_string(relative * rhs_norm) +
+                               "). Raise <Solver/Maximum linear iterations> or "
+                               "check that the scene holds the body."));
+      }
+    return control.last_step();
+  }
+
+#define DUALCONTACT_INSTANTIATE(dim)                                          \
+  template void assemble_elasticity<dim>(const Mapping<dim> &,                \
+                                         const DoFHandler<dim> &,             \
+                                         const Scene<dim> &,                  \
+                                         const AffineConstraints<double> &,   \
+                                         TrilinosWrappers::SparseMatrix &,    \
+                                         TrilinosWrappers::MPI::Vector &);    \
+  template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(         \
+    const Mapping<dim> &,                                                     \
+    const DoFHandler<dim> &,                                                  \
+    const TrilinosWrappers::SparseMatrix &,                                   \
+    const bool,                                                               \
+    const Point<dim> &,                                                       \
+    const double);                                                            \
+  template class ElasticSolver<dim>;
+
+  DUALCONTACT_INSTANTIATE(2)
+  DUALCONTACT_INSTANTIATE(3)
+#undef DUALCONTACT_INSTANTIATE
+} // namespace dualcontact

@@ -1,0 +1,758 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <dualcontact/input_error.h>
+#include <dualcontact/parameters.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const char *const condition_names = "free|fixed|normal fixed|traction|contact";
+
+    BoundaryCondition
+    parse_condition(const std::string &name)
+    {
+      if (name == "free")
+        return BoundaryCondition::free;
+      if (name == "fixed")
+        return BoundaryCondition::fixed;
+      if (name == "normal fixed")
+        return BoundaryCondition::normal_fixed;
+      if (name == "traction")
+        return BoundaryCondition::traction;
+      if (name == "contact")
+        return BoundaryCondition::contact;
+      AssertThrow(false, ExcInternalError());
+      return BoundaryCondition::free;
+    }
+
+    /**
+     * Split "k1: v1, k2: v2" into (key, value) pairs, keeping the order and
+     * any repeated key (repeats are an error the caller reports).
+     */
+    std::vector<std::pair<boundary_id, std::string>>
+    split_id_map(const std::string &text)
+    {
+      std::vector<std::pair<boundary_id, std::string>> result;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          if (item.empty())
+            continue;
+          const auto colon = item.find(':');
+          const std::string key   = Utilities::trim(item.substr(0, colon));
+          const std::string value = Utilities::trim(item.substr(colon + 1));
+          result.emplace_back(static_cast<boundary_id>(
+                                Utilities::string_to_int(key)),
+                              value);
+        }
+      return result;
+    }
+
+    std::map<boundary_id, std::string>
+    parse_id_map(const std::string &text, const std::string &entry)
+    {
+      std::map<boundary_id, std::string> result;
+      for (const auto &[id, value] : split_id_map(text))
+        if (!result.emplace(id, value).second)
+          throw InputError("The entry <" + entry + "> names boundary id " +
+                             std::to_string(id) + " twice.",
+                           exit_inconsistent);
+      return result;
+    }
+
+    std::vector<double>
+    parse_doubles(const std::string &text)
+    {
+      return Utilities::string_to_double(Utilities::split_string_list(text, ','));
+    }
+
+    // The pattern of an "id: value" list (ids 0..255).
+    Patterns::Map
+    id_map_pattern(const Patterns::PatternBase &value_pattern)
+    {
+      return Patterns::Map(Patterns::Integer(0, 255),
+                           value_pattern,
+                           0,
+                           Patterns::Map::max_int_value,
+                           ",",
+                           ":");
+    }
+
+    // The "Additional information" of a deal.II exception, without banner.
+    std::string
+    short_message(const ExceptionBase &exc)
+    {
+      std::ostringstream out;
+      exc.print_info(out);
+      std::string text = out.str();
+      // collapse whitespace runs (deal.II wraps its messages over lines)
+      std::string result;
+      bool        in_space = false;
+      for (const char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          in_space = true;
+        else
+          {
+            if (in_space && !result.empty())
+              result += ' ';
+            in_space = false;
+            result += c;
+          }
+      return result;
+    }
+
+    // Turn a ParameterHandler parse failure into an InputError with its code.
+    [[noreturn]] void
+    rethrow_parse_error(const ExceptionBase &exc, const std::string &source)
+    {
+      const std::string message = short_message(exc);
+      ExitCode          code    = exit_unknown_entry;
+      if (message.find("does not match the given pattern") != std::string::npos ||
+          message.find("doesn't match the pattern") != std::string::npos)
+        code = exit_invalid_value;
+      throw InputError("Error in " + source + ": " + message, code);
+    }
+  } // namespace
+
+  std::string
+  to_string(const BoundaryCondition condition)
+  {
+    switch (condition)
+      {
+        case BoundaryCondition::free:
+          return "free";
+        case BoundaryCondition::fixed:
+          return "fixed";
+        case BoundaryCondition::normal_fixed:
+          return "normal fixed";
+        case BoundaryCondition::traction:
+          return "traction";
+        case BoundaryCondition::contact:
+          return "contact";
+      }
+    return "";
+  }
+
+  bool
+  is_zero_expression(const std::string &expression)
+  {
+    for (const std::string &component :
+         Utilities::split_string_list(expression, ';'))
+      {
+        try
+          {
+            std::size_t  used  = 0;
+            const double value = std::stod(component, &used);
+            if (used != component.size() || value != 0.)
+              return false;
+          }
+        catch (const std::exception &)
+          {
+            return false;
+          }
+      }
+    return true;
+  }
+
+  // ------------------------------------------------------------ Geometry
+
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the body. 2 means plane strain.");
+    prm.declare_entry(
+      "Type",
+      "rectangle",
+      Patterns::Selection("rectangle|half disc"),
+      "Shape of the body. 'rectangle': an axis-parallel box with boundary ids "
+      "0 (x = x_min), 1 (x = x_max), 2 (y = y_min), 3 (y = y_max) (and 4, 5 "
+      "for z in 3D). 'half disc': the lower half of a disc (ball in 3D) of "
+      "the given radius and centre, with boundary ids 0 (the curved part) "
+      "and 1 (the flat top); refinement follows the circle.");
+    prm.declare_entry("Lower left corner",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Rectangle: the corner with the smallest coordinates "
+                      "[length], one value per dimension.");
+    prm.declare_entry("Upper right corner",
+                      "1, 1",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Rectangle: the corner with the largest coordinates "
+                      "[length], one value per dimension.");
+    prm.declare_entry("Subdivisions",
+                      "1, 1",
+                      Patterns::List(Patterns::Integer(1), 2, 3),
+                      "Rectangle: number of cells of the coarse mesh in each "
+                      "direction [-].");
+    prm.declare_entry("Center",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Half disc: centre of the disc, i.e. the middle of the "
+                      "flat top [length].");
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(0., Patterns::Double::max_double_value),
+                      "Half disc: radius R [length]. Must be positive.");
+    prm.declare_entry(
+      "Pre-refinement steps",
+      "0",
+      Patterns::Integer(0, 30),
+      "Number of times the cells near the foundation are refined before the "
+      "first cycle (after the initial global refinement) [-]. A cell counts as "
+      "near if one of its vertices lies within 'Pre-refinement distance' of "
+      "the foundation plane.");
+    prm.declare_entry("Pre-refinement distance",
+                      "0",
+                      Patterns::Double(0.),
+                      "Distance from the foundation plane within which cells "
+                      "are pre-refined [length].");
+    prm.leave_subsection();
+  }
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    dimension = prm.get_integer("Dimension");
+    type      = prm.get("Type") == "rectangle" ? GeometryType::rectangle :
+                                                 GeometryType::half_disc;
+    lower_left  = parse_doubles(prm.get("Lower left corner"));
+    upper_right = parse_doubles(prm.get("Upper right corner"));
+    subdivisions.clear();
+    for (const int n : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("Subdivisions"), ',')))
+      subdivisions.push_back(n);
+    center                  = parse_doubles(prm.get("Center"));
+    radius                  = prm.get_double("Radius");
+    pre_refinement_steps    = prm.get_integer("Pre-refinement steps");
+    pre_refinement_distance = prm.get_double("Pre-refinement distance");
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Material
+
+  double
+  MaterialParameters::lambda() const
+  {
+    return youngs_modulus * poissons_ratio /
+           ((1. + poissons_ratio) * (1. - 2. * poissons_ratio));
+  }
+
+  double
+  MaterialParameters::mu() const
+  {
+    return youngs_modulus / (2. * (1. + poissons_ratio));
+  }
+
+  void
+  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    prm.declare_entry("Young's modulus",
+                      "1",
+                      Patterns::Double(0., Patterns::Double::max_double_value),
+                      "Young's modulus E [stress = force/length^2, e.g. Pa "
+                      "in N-m-Pa or MPa in N-mm-MPa]. Must be positive.");
+    prm.declare_entry("Poisson's ratio",
+                      "0.3",
+                      Patterns::Double(-1., 0.5),
+                      "Poisson's ratio nu [-], in (-1, 0.5). 2D is plane "
+                      "strain.");
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    youngs_modulus = prm.get_double("Young's modulus");
+    poissons_ratio = prm.get_double("Poisson's ratio");
+    prm.leave_subsection();
+    // Patterns::Double has closed bounds; the open ends are checked here.
+    if (!(youngs_modulus > 0.))
+      throw InputError("The entry <Material/Young's modulus> must be positive.",
+                       exit_invalid_value);
+    if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
+      throw InputError("The entry <Material/Poisson's ratio> must lie in the "
+                       "open interval (-1, 0.5).",
+                       exit_invalid_value);
+  }
+
+  // ------------------------------------------------------------ Boundary
+
+  BoundaryCondition
+  BoundaryParameters::condition(const boundary_id id) const
+  {
+    const auto it = conditions.find(id);
+    return it == conditions.end() ? BoundaryCondition::free : it->second;
+  }
+
+  std::vector<boundary_id>
+  BoundaryParameters::ids_with(const BoundaryCondition wanted) const
+  {
+    std::vector<boundary_id> ids;
+    for (const auto &[id, condition] : conditions)
+      if (condition == wanted)
+        ids.push_back(id);
+    return ids;
+  }
+
+  void
+  BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry(
+      "Conditions",
+      "",
+      id_map_pattern(Patterns::Selection(condition_names)),
+      "The condition on each boundary id, as a list 'id: condition, id: "
+      "condition'. Conditions: 'free' (zero traction), 'fixed' (all "
+      "displacement components prescribed, see 'Displacements'), 'normal "
+      "fixed' (zero normal displacement, tangential one free: a frictionless "
+      "slider), 'traction' (prescribed traction, see 'Tractions'), 'contact' "
+      "(unilateral contact with the rigid foundation, with the friction law "
+      "of subsection Friction). Ids not listed are free. An id may appear "
+      "only once.");
+    prm.declare_entry(
+      "Displacements",
+      "",
+      id_map_pattern(Patterns::Anything()),
+      "Prescribed displacement on 'fixed' ids, as 'id: u_x; u_y' [length]; "
+      "each component an expression in x, y (z) with the constants pi, E, "
+      "nu, lambda, mu (no commas or colons inside). Fixed ids not listed "
+      "here are clamped (zero displacement).");
+    prm.declare_entry(
+      "Tractions",
+      "",
+      id_map_pattern(Patterns::Anything()),
+      "Prescribed traction on 'traction' ids, as 'id: T_x; T_y' [stress = "
+      "force/length^2]; each component an expression in x, y (z) with the "
+      "constants pi, E, nu, lambda, mu (no commas or colons inside). A "
+      "pressure p on a face with outer normal n is the traction -p n. Every "
+      "'traction' id must be listed.");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    conditions.clear();
+    for (const auto &[id, name] :
+         parse_id_map(prm.get("Conditions"), "Boundary conditions/Conditions"))
+      conditions[id] = parse_condition(name);
+    displacements =
+      parse_id_map(prm.get("Displacements"), "Boundary conditions/Displacements");
+    tractions =
+      parse_id_map(prm.get("Tractions"), "Boundary conditions/Tractions");
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Loads
+
+  void
+  LoadParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    prm.declare_entry(
+      "Body force",
+      "0; 0",
+      Patterns::Anything(),
+      "Body force f per unit volume, 'f_x; f_y' (one component per "
+      "dimension) [force/length^3]; each an expression in x, y (z) with the "
+      "constants pi, E, nu, lambda, mu. All zero: no body force is "
+      "assembled.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    body_force = prm.get("Body force");
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Foundation
+
+  void
+  FoundationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Foundation");
+    prm.declare_entry("Point",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "A point p on the boundary of the rigid foundation (a "
+                      "half-space) [length].");
+    prm.declare_entry("Normal",
+                      "0, 1",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Normal m of the foundation's boundary, pointing from the "
+                      "foundation into the body [-]. Normalised on input; must "
+                      "not be zero. The initial gap is g0(x) = (x - p).m.");
+    prm.leave_subsection();
+  }
+
+  void
+  FoundationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Foundation");
+    point  = parse_doubles(prm.get("Point"));
+    normal = parse_doubles(prm.get("Normal"));
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Friction
+
+  void
+  FrictionParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    prm.declare_entry(
+      "Law",
+      "none",
+      Patterns::Selection("none|given|coulomb"),
+      "Friction on the contact boundary: 'none' (frictionless), 'given' "
+      "(Tresca: the threshold g below), 'coulomb' (|sigma_t| <= F |sigma_n| "
+      "with the coefficient F below).");
+    prm.declare_entry("Coefficient",
+                      "0",
+                      Patterns::Anything(),
+                      "Coulomb friction coefficient F [-], >= 0: a number or "
+                      "an expression in x, y (z).");
+    prm.declare_entry("Threshold",
+                      "0",
+                      Patterns::Anything(),
+                      "Given friction threshold g [stress], >= 0: a number or "
+                      "an expression in x, y (z).");
+    prm.leave_subsection();
+  }
+
+  void
+  FrictionParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    const std::string name = prm.get("Law");
+    law         = name == "none"  ? FrictionLaw::none :
+                  name == "given" ? FrictionLaw::given :
+                                    FrictionLaw::coulomb;
+    coefficient = prm.get("Coefficient");
+    threshold   = prm.get("Threshold");
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Solver
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Linear solver tolerance",
+                      "1e-10",
+                      Patterns::Double(1e-16, 1.),
+                      "Relative tolerance of CG: stop when |residual| <= tol "
+                      "|right-hand side| [-].");
+    prm.declare_entry("Maximum linear iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Maximum number of CG iterations per linear solve [-].");
+    prm.declare_entry(
+      "AMG with rotation modes",
+      "true",
+      Patterns::Bool(),
+      "Give the algebraic multigrid all rigid-body modes (translations and "
+      "rotations) as near-null space; false gives it the translations only.");
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    linear_tolerance      = prm.get_double("Linear solver tolerance");
+    max_linear_iterations = prm.get_integer("Maximum linear iterations");
+    amg_rotation_modes    = prm.get_bool("AMG with rotation modes");
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Refinement
+
+  void
+  RefinementParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Refinement");
+    prm.declare_entry("Initial global refinement",
+                      "0",
+                      Patterns::Integer(0, 20),
+                      "Number of global refinements of the coarse mesh before "
+                      "the first cycle [-].");
+    prm.declare_entry("Number of cycles",
+                      "1",
+                      Patterns::Integer(1, 30),
+                      "Number of meshes solved on; each after the first is "
+                      "the previous one refined [-].");
+    prm.declare_entry("Strategy",
+                      "global",
+                      Patterns::Selection("global"),
+                      "How the mesh is refined between cycles: 'global' halves "
+                      "h everywhere (nested meshes, as in the source method).");
+    prm.leave_subsection();
+  }
+
+  void
+  RefinementParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Refinement");
+    initial_global_refinement = prm.get_integer("Initial global refinement");
+    n_cycles                  = prm.get_integer("Number of cycles");
+    strategy                  = RefinementStrategy::global;
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Output
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Folder for all output files; created if missing.");
+    prm.declare_entry("Write vtu",
+                      "true",
+                      Patterns::Bool(),
+                      "Write .pvtu/.vtu files (one set per cycle) for "
+                      "ParaView.");
+    prm.declare_entry("Print timing",
+                      "true",
+                      Patterns::Bool(),
+                      "Print wall times on screen. Tests switch this off so "
+                      "that the screen output is deterministic.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory    = prm.get("Directory");
+    write_vtu    = prm.get_bool("Write vtu");
+    print_timing = prm.get_bool("Print timing");
+    prm.leave_subsection();
+    if (directory.empty())
+      throw InputError("The entry <Output/Directory> must not be empty.",
+                       exit_invalid_value);
+  }
+
+  // ------------------------------------------------------------ Exact
+
+  void
+  ExactSolutionParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Exact solution");
+    prm.declare_entry(
+      "Displacement",
+      "",
+      Patterns::Anything(),
+      "If known, the exact displacement 'u_x; u_y' [length] as expressions "
+      "in x, y (z) with the constants pi, E, nu, lambda, mu; the L2 and H1 "
+      "errors are then reported per cycle. Empty: none is known.");
+    prm.leave_subsection();
+  }
+
+  void
+  ExactSolutionParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Exact solution");
+    displacement = Utilities::trim(prm.get("Displacement"));
+    prm.leave_subsection();
+  }
+
+  // ------------------------------------------------------------ Parameters
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    GeometryParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    BoundaryParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
+    FoundationParameters::declare_parameters(prm);
+    FrictionParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    RefinementParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+    ExactSolutionParameters::declare_parameters(prm);
+  }
+
+  void
+  Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    geometry.parse_parameters(prm);
+    material.parse_parameters(prm);
+    boundary.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    foundation.parse_parameters(prm);
+    friction.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    refinement.parse_parameters(prm);
+    output.parse_parameters(prm);
+    exact.parse_parameters(prm);
+    check_consistency();
+  }
+
+  void
+  Parameters::read_file(const std::string &filename)
+  {
+    std::ifstream in(filename);
+    if (!in)
+      throw InputError("Cannot open the parameter file <" + filename + ">.",
+                       exit_cannot_read_file);
+    std::stringstream text;
+    text << in.rdbuf();
+
+    ParameterHandler prm;
+    declare_parameters(prm);
+    try
+      {
+        prm.parse_input_from_string(text.str(), filename);
+      }
+    catch (const ExceptionBase &exc)
+      {
+        rethrow_parse_error(exc, "parameter file <" + filename + ">");
+      }
+    parse_parameters(prm);
+  }
+
+  void
+  Parameters::read_string(const std::string &text)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    try
+      {
+        prm.parse_input_from_string(text, "input string");
+      }
+    catch (const ExceptionBase &exc)
+      {
+        rethrow_parse_error(exc, "parameters");
+      }
+    parse_parameters(prm);
+  }
+
+  void
+  Parameters::check_consistency() const
+  {
+    const unsigned int dim = geometry.dimension;
+    const auto         need_dim = [dim](const std::vector<double> &values,
+                                const std::string          &entry) {
+      if (values.size() != dim)
+        throw InputError("The entry <" + entry + "> needs " +
+                           std::to_string(dim) + " values (one per dimension), "
+                                                 "not " +
+                           std::to_string(values.size()) + ".",
+                         exit_inconsistent);
+    };
+
+    if (geometry.type == GeometryType::rectangle)
+      {
+        need_dim(geometry.lower_left, "Geometry/Lower left corner");
+        need_dim(geometry.upper_right, "Geometry/Upper right corner");
+        if (geometry.subdivisions.size() != dim)
+          throw InputError("The entry <Geometry/Subdivisions> needs " +
+                             std::to_string(dim) + " values.",
+                           exit_inconsistent);
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(geometry.upper_right[d] > geometry.lower_left[d]))
+            throw InputError("The entry <Geometry/Upper right corner> must be "
+                             "larger than <Geometry/Lower left corner> in "
+                             "every coordinate.",
+                             exit_inconsistent);
+      }
+    else
+      need_dim(geometry.center, "Geometry/Center");
+
+    const unsigned int n_ids =
+      geometry.type == GeometryType::rectangle ? 2 * dim : 2;
+    for (const auto &[id, condition] : boundary.conditions)
+      if (id >= n_ids)
+        throw InputError("The entry <Boundary conditions/Conditions> names "
+                         "boundary id " +
+                           std::to_string(id) + ", which the geometry '" +
+                           (geometry.type == GeometryType::rectangle ?
+                              "rectangle" :
+                              "half disc") +
+                           "' does not have (its ids are 0 to " +
+                           std::to_string(n_ids - 1) + ").",
+                         exit_inconsistent);
+
+    const auto check_data = [&](const std::map<boundary_id, std::string> &data,
+                                const BoundaryCondition                   wanted,
+                                const std::string                         &entry) {
+      for (const auto &[id, expression] : data)
+        if (boundary.condition(id) != wanted)
+          throw InputError("The entry <Boundary conditions/" + entry +
+                             "> gives data for boundary id " +
+                             std::to_string(id) + ", whose condition is '" +
+                             to_string(boundary.condition(id)) + "', not '" +
+                             to_string(wanted) + "'.",
+                           exit_inconsistent);
+    };
+    check_data(boundary.displacements, BoundaryCondition::fixed, "Displacements");
+    check_data(boundary.tractions, BoundaryCondition::traction, "Tractions");
+    for (const boundary_id id : boundary.ids_with(BoundaryCondition::traction))
+      if (boundary.tractions.count(id) == 0)
+        throw InputError("Boundary id " + std::to_string(id) +
+                           " has the condition 'traction' but the entry "
+                           "<Boundary conditions/Tractions> gives no traction "
+                           "for it.",
+                         exit_inconsistent);
+
+    if (!boundary.ids_with(BoundaryCondition::contact).empty())
+      {
+        need_dim(foundation.point, "Foundation/Point");
+        need_dim(foundation.normal, "Foundation/Normal");
+        double norm = 0;
+        for (const double c : foundation.normal)
+          norm += c * c;
+        if (!(std::sqrt(norm) > 1e-12))
+          throw InputError("The entry <Foundation/Normal> must not be the "
+                           "zero vector.",
+                           exit_invalid_value);
+      }
+    else if (friction.law != FrictionLaw::none)
+      throw InputError("The entry <Friction/Law> asks for friction, but no "
+                       "boundary id has the condition 'contact'.",
+                       exit_inconsistent);
+
+    if (geometry.pre_refinement_steps > 0 &&
+        boundary.ids_with(BoundaryCondition::contact).empty())
+      throw InputError("The entry <Geometry/Pre-refinement steps> refines "
+                       "toward the foundation, but the scene has no contact "
+                       "boundary.",
+                       exit_inconsistent);
+  }
+
+  std::string
+  default_parameter_file()
+  {
+    ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    std::ostringstream out;
+    prm.print_parameters(out, ParameterHandler::PRM);
+    return out.str();
+  }
+} // namespace dualcontact

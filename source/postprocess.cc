@@ -1,0 +1,125 @@
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/distributed/tria_base.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <dualcontact/postprocess.h>
+
+namespace dualcontact
+{
+  template <int dim>
+  StressPostprocessor<dim>::StressPostprocessor(
+    const MaterialParameters &material)
+    : lambda(material.lambda())
+    , mu(material.mu())
+  {}
+
+  template <int dim>
+  void
+  StressPostprocessor<dim>::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<dim> &inputs,
+    std::vector<Vector<double>>                &computed_quantities) const
+  {
+    for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
+      {
+        Tensor<2, dim> grad;
+        for (unsigned int d = 0; d < dim; ++d)
+          grad[d] = inputs.solution_gradients[p][d];
+        const SymmetricTensor<2, dim> eps   = symmetrize(grad);
+        const double                  trace_eps = trace(eps);
+        const SymmetricTensor<2, dim> sigma =
+          lambda * trace_eps * unit_symmetric_tensor<dim>() + 2. * mu * eps;
+
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            computed_quantities[p](i * dim + j) = sigma[i][j];
+
+        // von Mises from the deviator of the full 3x3 stress; in plane
+        // strain sigma_zz = lambda tr(eps).
+        SymmetricTensor<2, 3> s3;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            s3[i][j] = sigma[i][j];
+        if (dim == 2)
+          s3[2][2] = lambda * trace_eps;
+        computed_quantities[p](dim * dim) =
+          std::sqrt(1.5) * deviator(s3).norm();
+      }
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  StressPostprocessor<dim>::get_names() const
+  {
+    std::vector<std::string> names(dim * dim, "stress");
+    names.emplace_back("von_mises");
+    return names;
+  }
+
+  template <int dim>
+  std::vector<DataComponentInterpretation::DataComponentInterpretation>
+  StressPostprocessor<dim>::get_data_component_interpretation() const
+  {
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim * dim,
+                     DataComponentInterpretation::component_is_part_of_tensor);
+    interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+    return interpretation;
+  }
+
+  template <int dim>
+  UpdateFlags
+  StressPostprocessor<dim>::get_needed_update_flags() const
+  {
+    return update_gradients;
+  }
+
+  template <int dim>
+  ErrorNorms
+  compute_error_norms(const Mapping<dim>                  &mapping,
+                      const DoFHandler<dim>               &dof_handler,
+                      const TrilinosWrappers::MPI::Vector &solution,
+                      const Function<dim>                 *exact)
+  {
+    const auto &triangulation = dof_handler.get_triangulation();
+    const QGauss<dim> quadrature(dof_handler.get_fe().degree + 2);
+    Vector<float>     cellwise(triangulation.n_active_cells());
+    const Functions::ZeroFunction<dim> zero(dim);
+
+    const auto norm = [&](const Function<dim>          &reference,
+                          const VectorTools::NormType type) {
+      VectorTools::integrate_difference(mapping,
+                                        dof_handler,
+                                        solution,
+                                        reference,
+                                        cellwise,
+                                        quadrature,
+                                        type);
+      return VectorTools::compute_global_error(triangulation, cellwise, type);
+    };
+
+    ErrorNorms norms;
+    norms.u_l2 = norm(zero, VectorTools::L2_norm);
+    if (exact != nullptr)
+      {
+        norms.l2      = norm(*exact, VectorTools::L2_norm);
+        norms.h1_semi = norm(*exact, VectorTools::H1_seminorm);
+      }
+    return norms;
+  }
+
+  template class StressPostprocessor<2>;
+  template class StressPostprocessor<3>;
+  template ErrorNorms
+  compute_error_norms<2>(const Mapping<2> &,
+                         const DoFHandler<2> &,
+                         const TrilinosWrappers::MPI::Vector &,
+                         const Function<2> *);
+  template ErrorNorms
+  compute_error_norms<3>(const Mapping<3> &,
+                         const DoFHandler<3> &,
+                         const TrilinosWrappers::MPI::Vector &,
+                         const Function<3> *);
+} // namespace dualcontact

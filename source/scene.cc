@@ -1,0 +1,365 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <dualcontact/input_error.h>
+#include <dualcontact/scene.h>
+
+#include <sstream>
+
+namespace dualcontact
+{
+  namespace
+  {
+    /** Parse "a; b" into a vector-valued function, naming the entry on error. */
+    template <int dim>
+    std::unique_ptr<Function<dim>>
+    make_function(const std::string          &expression,
+                  const unsigned int          n_components,
+                  const MaterialParameters   &material,
+                  const std::string          &entry)
+    {
+      const std::map<std::string, double> constants = {
+        {"pi", numbers::PI},
+        {"E", material.youngs_modulus},
+        {"nu", material.poissons_ratio},
+        {"lambda", material.lambda()},
+        {"mu", material.mu()}};
+      const std::string variables = dim == 2 ? "x,y" : "x,y,z";
+
+      const auto n_given =
+        Utilities::split_string_list(expression, ';').size();
+      if (n_given != n_components)
+        throw InputError("The entry <" + entry + "> needs " +
+                           std::to_string(n_components) +
+                           " expression(s) separated by ';', not " +
+                           std::to_string(n_given) + ": '" + expression + "'.",
+                         exit_invalid_value);
+
+      auto function = std::make_unique<FunctionParser<dim>>(n_components);
+      try
+        {
+          function->initialize(variables, expression, constants);
+          // muparser may defer some errors to the first evaluation
+          Vector<double> values(n_components);
+          function->vector_value(Point<dim>(), values);
+        }
+      catch (const std::exception &)
+        {
+          throw InputError("The entry <" + entry +
+                             "> is not a valid expression in " + variables +
+                             ": '" + expression + "'.",
+                           exit_invalid_value);
+        }
+      return function;
+    }
+
+    template <int dim>
+    Point<dim>
+    to_point(const std::vector<double> &values)
+    {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim && d < values.size(); ++d)
+        p[d] = values[d];
+      return p;
+    }
+  } // namespace
+
+  std::string
+  Effects::describe() const
+  {
+    std::ostringstream out;
+    out << "  contact with the foundation : "
+        << (contact ? "yes: Uzawa on the modified Lagrangian" :
+                      "no: one linear elasticity solve per mesh")
+        << '\n'
+        << "  friction                    : "
+        << (!contact                          ? "no (no contact)" :
+            friction == FrictionLaw::none    ? "no" :
+            friction == FrictionLaw::given   ? "given threshold (Tresca)" :
+                                                "Coulomb (successive approximations)")
+        << '\n'
+        << "  body force                  : "
+        << (body_force ? "yes" : "no (not assembled)") << '\n'
+        << "  boundary tractions          : "
+        << (tractions ? "yes" : "no (not assembled)") << '\n';
+    return out.str();
+  }
+
+  template <int dim>
+  Scene<dim>::Scene(const Parameters &parameters)
+    : parameters(parameters)
+  {
+    AssertThrow(parameters.geometry.dimension == dim,
+                ExcMessage("Scene<dim> built for the wrong dimension."));
+
+    const MaterialParameters &material = parameters.material;
+    const BoundaryParameters &boundary = parameters.boundary;
+
+    for (const types::boundary_id id : ids_with(BoundaryCondition::fixed))
+      {
+        const auto it = boundary.displacements.find(id);
+        if (it != boundary.displacements.end() && !is_zero_expression(it->second))
+          displacements[id] =
+            make_function<dim>(it->second,
+                               dim,
+                               material,
+                               "Boundary conditions/Displacements");
+      }
+    for (const types::boundary_id id : ids_with(BoundaryCondition::traction))
+      {
+        const std::string &expression = boundary.tractions.at(id);
+        if (!is_zero_expression(expression))
+          tractions[id] = make_function<dim>(expression,
+                                             dim,
+                                             material,
+                                             "Boundary conditions/Tractions");
+      }
+    if (!is_zero_expression(parameters.loads.body_force))
+      body_force_ = make_function<dim>(parameters.loads.body_force,
+                                       dim,
+                                       material,
+                                       "Loads/Body force");
+    else
+      make_function<dim>(parameters.loads.body_force,
+                         dim,
+                         material,
+                         "Loads/Body force"); // checks the component count
+    if (!parameters.exact.displacement.empty())
+      exact_ = make_function<dim>(parameters.exact.displacement,
+                                  dim,
+                                  material,
+                                  "Exact solution/Displacement");
+
+    foundation_point  = to_point<dim>(parameters.foundation.point);
+    foundation_normal = to_point<dim>(parameters.foundation.normal);
+    if (foundation_normal.norm() > 0)
+      foundation_normal /= foundation_normal.norm();
+
+    effects_.contact    = !ids_with(BoundaryCondition::contact).empty();
+    effects_.friction   = parameters.friction.law;
+    effects_.body_force = body_force_ != nullptr;
+    effects_.tractions  = !tractions.empty();
+  }
+
+  template <int dim>
+  std::set<types::boundary_id>
+  Scene<dim>::ids_with(const BoundaryCondition condition) const
+  {
+    const auto ids = parameters.boundary.ids_with(condition);
+    return {ids.begin(), ids.end()};
+  }
+
+  template <int dim>
+  const Function<dim> &
+  Scene<dim>::displacement(const types::boundary_id id) const
+  {
+    const auto it = displacements.find(id);
+    return it == displacements.end() ? static_cast<const Function<dim> &>(zero) :
+                                       *it->second;
+  }
+
+  template <int dim>
+  const Function<dim> *
+  Scene<dim>::traction(const types::boundary_id id) const
+  {
+    const auto it = tractions.find(id);
+    return it == tractions.end() ? nullptr : it->second.get();
+  }
+
+  template <int dim>
+  double
+  Scene<dim>::characteristic_length() const
+  {
+    const GeometryParameters &g = parameters.geometry;
+    if (g.type == GeometryType::half_disc)
+      return g.radius;
+    double length = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      length = std::max(length, g.upper_right[d] - g.lower_left[d]);
+    return length;
+  }
+
+  template <int dim>
+  Point<dim>
+  Scene<dim>::center() const
+  {
+    const GeometryParameters &g = parameters.geometry;
+    if (g.type == GeometryType::half_disc)
+      return to_point<dim>(g.center);
+    return 0.5 * (to_point<dim>(g.lower_left) + to_point<dim>(g.upper_right));
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::create_mesh(
+    parallel::distributed::Triangulation<dim> &triangulation) const
+  {
+    const GeometryParameters &g = parameters.geometry;
+    if (g.type == GeometryType::rectangle)
+      {
+        std::vector<unsigned int> repetitions(g.subdivisions.begin(),
+                                              g.subdivisions.end());
+        GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                  repetitions,
+                                                  to_point<dim>(g.lower_left),
+                                                  to_point<dim>(g.upper_right),
+                                                  /*colorize=*/true);
+      }
+    else
+      {
+        // deal.II's half ball is the half x >= 0 of a ball around the origin.
+        // Rotate it so that the cut plane is the top (normal +e_{dim-1}) and
+        // the body lies below, then move it to the given centre.
+        Triangulation<dim> serial;
+        GridGenerator::half_hyper_ball(serial, Point<dim>(), g.radius);
+        const Point<dim> center = to_point<dim>(g.center);
+        GridTools::transform(
+          [&center](const Point<dim> &p) {
+            Point<dim> q;
+            if (dim == 2)
+              q = Point<dim>(p[1], -p[0]);
+            else // a proper rotation: (x,y,z) -> (-y, z, -x)
+              {
+                q[0] = -p[1];
+                q[1] = p[dim - 1];
+                q[dim - 1] = -p[0];
+              }
+            return q + center;
+          },
+          serial);
+        serial.reset_all_manifolds();
+        triangulation.copy_triangulation(serial);
+
+        // The curved boundary follows the circle; the interior blends
+        // smoothly toward it, so refined cells stay well shaped.
+        triangulation.set_all_manifold_ids(1);
+        triangulation.set_all_manifold_ids_on_boundary(0, 0);
+        triangulation.set_manifold(0, SphericalManifold<dim>(center));
+        TransfiniteInterpolationManifold<dim> inner;
+        inner.initialize(triangulation);
+        triangulation.set_manifold(1, inner);
+      }
+
+    triangulation.refine_global(parameters.refinement.initial_global_refinement);
+
+    for (unsigned int step = 0; step < g.pre_refinement_steps; ++step)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              if (initial_gap(cell->vertex(v)) <= g.pre_refinement_distance)
+                {
+                  cell->set_refine_flag();
+                  break;
+                }
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::check_rigid_motions(
+    const parallel::distributed::Triangulation<dim> &triangulation) const
+  {
+    if (effects_.contact)
+      return; // semi-coercive is allowed: contact holds the body
+
+    // The rigid motions: dim translations and dim*(dim-1)/2 rotations about
+    // the body's centre, scaled by its size so that all have unit magnitude.
+    const unsigned int n_modes = dim * (dim + 1) / 2;
+    const double       length  = characteristic_length();
+    const Point<dim>   center  = this->center();
+
+    const auto mode = [&](const unsigned int i, const Point<dim> &x) {
+      Tensor<1, dim> m;
+      if (i < dim)
+        m[i] = 1;
+      else
+        {
+          const Tensor<1, dim> r = (x - center) / length;
+          const unsigned int   k = i - dim; // rotation in the plane (a, b)
+          const unsigned int   a = (dim == 2) ? 0 : (k == 2 ? 1 : 0);
+          const unsigned int   b = (dim == 2) ? 1 : (k == 0 ? 1 : 2);
+          m[a] = -r[b];
+          m[b] = r[a];
+        }
+      return m;
+    };
+
+    // Gram matrix of the modes in the boundary constraints:
+    // G_ij = int_{fixed} m_i.m_j + int_{normal fixed} (m_i.n)(m_j.n)
+    const auto fixed  = ids_with(BoundaryCondition::fixed);
+    const auto slider = ids_with(BoundaryCondition::normal_fixed);
+
+    const QGauss<dim - 1> quadrature(2);
+    MappingQ1<dim>        mapping;
+    FE_Nothing<dim>       fe;
+    FEFaceValues<dim>     fe_face(mapping,
+                              fe,
+                              quadrature,
+                              update_quadrature_points | update_normal_vectors |
+                                update_JxW_values);
+    FullMatrix<double> gram(n_modes, n_modes);
+    double             measure = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && (fixed.count(face->boundary_id()) ||
+                                      slider.count(face->boundary_id())))
+            {
+              const bool all = fixed.count(face->boundary_id()) > 0;
+              fe_face.reinit(cell, face);
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  const Point<dim>     &x = fe_face.quadrature_point(q);
+                  const Tensor<1, dim> &n = fe_face.normal_vector(q);
+                  measure += fe_face.JxW(q);
+                  for (unsigned int i = 0; i < n_modes; ++i)
+                    for (unsigned int j = 0; j < n_modes; ++j)
+                      gram(i, j) += fe_face.JxW(q) *
+                                    (all ? mode(i, x) * mode(j, x) :
+                                           (mode(i, x) * n) * (mode(j, x) * n));
+                }
+            }
+    const MPI_Comm comm = triangulation.get_communicator();
+    for (unsigned int i = 0; i < n_modes; ++i)
+      for (unsigned int j = 0; j < n_modes; ++j)
+        gram(i, j) = Utilities::MPI::sum(gram(i, j), comm);
+    measure = Utilities::MPI::sum(measure, comm);
+
+    unsigned int n_free = n_modes;
+    if (measure > 0)
+      {
+        LAPACKFullMatrix<double> g(n_modes);
+        g = gram;
+        g.compute_eigenvalues();
+        n_free = 0;
+        for (unsigned int i = 0; i < n_modes; ++i)
+          if (std::abs(g.eigenvalue(i)) < 1e-10 * measure)
+            ++n_free;
+      }
+    if (n_free > 0)
+      throw InputError(
+        "The scene leaves " + std::to_string(n_free) +
+          " rigid-body motion(s) free and has no contact boundary to hold "
+          "them, so the elastic problem has no unique solution. Give more of "
+          "the boundary the condition 'fixed' or 'normal fixed' in <Boundary "
+          "conditions/Conditions>.",
+        exit_inconsistent);
+  }
+
+  template class Scene<2>;
+  template class Scene<3>;
+} // namespace dualcontact
