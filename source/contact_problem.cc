@@ -4,6 +4,8 @@
 
 #include <deal.II/fe/fe_q.h>
 
+#include <deal.II/dofs/dof_accessor.h>
+
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/sparsity_tools.h>
@@ -44,12 +46,11 @@ namespace dualcontact
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
     , elastic_solver(parameters.solver)
-  {
-    if (scene.effects().contact)
-      throw InputError("The scene has a contact boundary; contact is not "
-                       "implemented in this version of dualcontact.",
-                       exit_inconsistent);
-  }
+    , uzawa_solver(parameters.solver,
+                   elastic_solver,
+                   pcout,
+                   parameters.output.print_timing)
+  {}
 
   template <int dim>
   void
@@ -85,19 +86,37 @@ namespace dualcontact
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
+    hanging_node_constraints.close();
+
     // Hanging nodes first, then Dirichlet, then sliders: later ones do not
     // overwrite earlier ones, which keeps the space conforming.
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const types::boundary_id id : scene.ids_with(BoundaryCondition::fixed))
-      VectorTools::interpolate_boundary_values(
-        mapping, dof_handler, id, scene.displacement(id), constraints);
+    const Functions::ZeroFunction<dim> zero(dim);
     const auto sliders = scene.ids_with(BoundaryCondition::normal_fixed);
-    if (!sliders.empty())
-      VectorTools::compute_no_normal_flux_constraints(
-        dof_handler, 0, sliders, constraints, mapping);
-    constraints.close();
+    for (const bool homogeneous : {false, true})
+      {
+        AffineConstraints<double> &c =
+          homogeneous ? homogeneous_constraints : constraints;
+        c.clear();
+        c.reinit(locally_relevant_dofs);
+        c.merge(hanging_node_constraints);
+        for (const types::boundary_id id :
+             scene.ids_with(BoundaryCondition::fixed))
+          VectorTools::interpolate_boundary_values(
+            mapping,
+            dof_handler,
+            id,
+            homogeneous ? static_cast<const Function<dim> &>(zero) :
+                          scene.displacement(id),
+            c);
+        if (!sliders.empty())
+          VectorTools::compute_no_normal_flux_constraints(
+            dof_handler, 0, sliders, c, mapping);
+        c.close();
+      }
 
     DynamicSparsityPattern dsp(locally_relevant_dofs);
     DoFTools::make_sparsity_pattern(dof_handler,
@@ -112,6 +131,11 @@ namespace dualcontact
                          locally_owned_dofs,
                          dsp,
                          mpi_communicator);
+    if (scene.effects().contact)
+      mass_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
   }
@@ -120,26 +144,127 @@ namespace dualcontact
   void
   ContactProblem<dim>::assemble_system()
   {
-    assemble_elasticity(
-      mapping, dof_handler, scene, constraints, system_matrix, system_rhs);
+    const bool contact = scene.effects().contact;
+    assemble_elasticity(mapping,
+                        dof_handler,
+                        scene,
+                        constraints,
+                        system_matrix,
+                        system_rhs,
+                        contact ? &mass_matrix : nullptr);
+    if (contact)
+      {
+        // The Uzawa steps minimise with the proximal term (chi/2)|v - v^k|^2
+        // (DESIGN.md §2), so their matrix is K = A + chi M. chi is relative
+        // to E / L^2 so that the scene's units do not matter.
+        const double chi = parameters.solver.proximal *
+                           parameters.material.youngs_modulus /
+                           std::pow(scene.characteristic_length(), 2);
+        system_matrix.add(chi, mass_matrix);
+        cycle_results.back().chi = chi;
+      }
   }
 
   template <int dim>
   void
   ContactProblem<dim>::solve()
   {
-    elastic_solver.initialize(mapping,
-                              dof_handler,
-                              system_matrix,
-                              scene.center(),
-                              scene.characteristic_length());
+    elastic_solver.set_near_null_space(mapping,
+                                       dof_handler,
+                                       system_matrix,
+                                       scene.center(),
+                                       scene.characteristic_length());
+    TrilinosWrappers::MPI::Vector v(locally_owned_dofs, mpi_communicator);
+    if (scene.effects().contact)
+      solve_contact(v);
+    else
+      solve_linear_elasticity(v);
+    solution = v;
+  }
 
-    TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
-    const unsigned int iterations =
-      elastic_solver.solve(system_matrix, owned, system_rhs);
-    constraints.distribute(owned);
-    solution = owned;
-    cycle_results.back().linear_iterations = iterations;
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v)
+  {
+    elastic_solver.initialize(system_matrix);
+    cycle_results.back().linear_iterations =
+      elastic_solver.solve(system_matrix, v, system_rhs);
+    constraints.distribute(v);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_contact(TrilinosWrappers::MPI::Vector &v)
+  {
+    CycleResult &result = cycle_results.back();
+    contact_set.setup(
+      mapping, dof_handler, hanging_node_constraints, constraints, scene);
+    AssertThrow(contact_set.n_global_nodes() > 0,
+                ExcMessage("The contact boundary has no contact nodes."));
+
+    // r is relative to E / h_C, so that the Uzawa steps do not depend on
+    // the units or on the mesh size (DESIGN.md §3).
+    result.r = parameters.solver.augmentation *
+               parameters.material.youngs_modulus /
+               contact_set.min_face_diameter();
+    result.n_contact_nodes = contact_set.n_global_nodes();
+    pcout << "   contact: " << result.n_contact_nodes
+          << " nodes, r = " << result.r << ", chi = " << result.chi << '\n';
+
+    // start from v = 0 with the prescribed boundary values, l1 = 0
+    v = 0;
+    constraints.distribute(v);
+
+    const ContactSystem system{
+      system_matrix, mass_matrix, system_rhs, homogeneous_constraints,
+      result.r,      result.chi};
+    const std::size_t first = iteration_log.size();
+    const ContactStatistics statistics =
+      uzawa_solver.solve(system, contact_set, v, iteration_log);
+    for (std::size_t i = first; i < iteration_log.size(); ++i)
+      iteration_log[i].cycle = result.cycle;
+
+    result.uzawa_steps       = statistics.uzawa_steps;
+    result.newton_steps      = statistics.newton_steps;
+    result.linear_iterations = statistics.cg_iterations;
+    result.amg_setups        = statistics.amg_setups;
+    result.n_active          = statistics.n_active;
+
+    // Figures of the contact zone: total force, peak pressure, half-width
+    // along t, and the error against an exact pressure (nodal quadrature).
+    const Function<dim> *exact = scene.exact_pressure();
+    double force = 0, peak = 0, error2 = 0, norm2 = 0;
+    double t_min = std::numeric_limits<double>::max();
+    double t_max = -std::numeric_limits<double>::max();
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        const ContactNode<dim> &node = contact_set.nodes[s];
+        const double            l1   = contact_set.l1[s];
+        force += node.weight * l1;
+        peak = std::max(peak, l1);
+        if (l1 > 0.)
+          {
+            const double t = node.position * contact_set.tangent;
+            t_min          = std::min(t_min, t);
+            t_max          = std::max(t_max, t);
+          }
+        if (exact != nullptr)
+          {
+            const double p = exact->value(node.position);
+            error2 += node.weight * (l1 - p) * (l1 - p);
+            norm2 += node.weight * p * p;
+          }
+      }
+    result.contact_force = Utilities::MPI::sum(force, mpi_communicator);
+    result.max_pressure  = Utilities::MPI::max(peak, mpi_communicator);
+    t_min                = Utilities::MPI::min(t_min, mpi_communicator);
+    t_max                = Utilities::MPI::max(t_max, mpi_communicator);
+    if (dim == 2 && t_max >= t_min)
+      result.contact_half_width = 0.5 * (t_max - t_min);
+    if (exact != nullptr)
+      result.pressure_error =
+        std::sqrt(Utilities::MPI::sum(error2, mpi_communicator) /
+                  Utilities::MPI::sum(norm2, mpi_communicator));
   }
 
   template <int dim>
@@ -183,6 +308,63 @@ namespace dualcontact
     Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = static_cast<float>(triangulation.locally_owned_subdomain());
     data_out.add_data_vector(subdomain, "subdomain");
+
+    // Nodal fields on Gamma_C, on a scalar copy of the element: contact
+    // pressure l1, gap g0 - u_n, and status (-1 not a contact node,
+    // 0 separated, 1 in contact). Zero away from Gamma_C.
+    DoFHandler<dim> scalar_dof_handler(triangulation);
+    const FE_Q<dim> scalar_fe(fe.degree);
+    std::array<TrilinosWrappers::MPI::Vector, 3> contact_fields;
+    if (scene.effects().contact)
+      {
+        scalar_dof_handler.distribute_dofs(scalar_fe);
+        const IndexSet owned = scalar_dof_handler.locally_owned_dofs();
+        IndexSet       relevant;
+        DoFTools::extract_locally_relevant_dofs(scalar_dof_handler, relevant);
+        std::array<TrilinosWrappers::MPI::Vector, 3> owned_fields;
+        for (auto &f : owned_fields)
+          f.reinit(owned, mpi_communicator);
+        owned_fields[2] = -1.;
+
+        std::map<types::global_dof_index, unsigned int> node_of_dof;
+        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+          node_of_dof[contact_set.nodes[s].dofs[0]] = s;
+        std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell());
+        std::vector<types::global_dof_index> scalar_dofs(
+          scalar_fe.n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(vector_dofs);
+              typename DoFHandler<dim>::active_cell_iterator(
+                &triangulation, cell->level(), cell->index(), &scalar_dof_handler)
+                ->get_dof_indices(scalar_dofs);
+              for (unsigned int i = 0; i < scalar_dofs.size(); ++i)
+                {
+                  const auto it = node_of_dof.find(
+                    vector_dofs[fe.component_to_system_index(0, i)]);
+                  if (it == node_of_dof.end() || !owned.is_element(scalar_dofs[i]))
+                    continue;
+                  const unsigned int s = it->second;
+                  const double       l1 = contact_set.l1[s];
+                  owned_fields[0][scalar_dofs[i]] = l1;
+                  owned_fields[1][scalar_dofs[i]] =
+                    contact_set.nodes[s].gap0 -
+                    contact_set.normal_displacement(solution, s);
+                  owned_fields[2][scalar_dofs[i]] = l1 > 0. ? 1. : 0.;
+                }
+            }
+        const char *names[] = {"contact_pressure", "gap", "contact_status"};
+        for (unsigned int f = 0; f < 3; ++f)
+          {
+            owned_fields[f].compress(VectorOperation::insert);
+            contact_fields[f].reinit(owned, relevant, mpi_communicator);
+            contact_fields[f] = owned_fields[f];
+            data_out.add_data_vector(scalar_dof_handler,
+                                     contact_fields[f],
+                                     names[f]);
+          }
+      }
     data_out.build_patches(mapping, fe.degree);
 
     const std::string pvtu = data_out.write_vtu_with_pvtu_record(
@@ -204,15 +386,43 @@ namespace dualcontact
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     std::ofstream csv(parameters.output.directory + "/cycles.csv");
-    csv << "cycle,cells,dofs,linear_iterations,u_l2,l2_error,h1_error,"
-           "l2_rate,h1_rate,time_setup,time_assembly,time_solve,time_output\n";
+    csv << "cycle,cells,dofs,contact_nodes,active_nodes,uzawa_steps,"
+           "newton_steps,linear_iterations,amg_setups,contact_force,"
+           "max_pressure,contact_half_width,pressure_error,u_l2,"
+           "l2_error,h1_error,l2_rate,h1_rate,time_setup,time_assembly,"
+           "time_solve,time_output\n";
     csv << std::setprecision(10);
     for (const CycleResult &r : cycle_results)
       csv << r.cycle << ',' << r.n_cells << ',' << r.n_dofs << ','
-          << r.linear_iterations << ',' << r.u_l2 << ',' << r.l2_error << ','
-          << r.h1_error << ',' << r.l2_rate << ',' << r.h1_rate << ','
+          << r.n_contact_nodes << ',' << r.n_active << ',' << r.uzawa_steps
+          << ',' << r.newton_steps << ',' << r.linear_iterations << ','
+          << r.amg_setups << ',' << r.contact_force << ',' << r.max_pressure
+          << ',' << r.contact_half_width << ',' << r.pressure_error << ','
+          << r.u_l2 << ','
+          << r.l2_error << ',' << r.h1_error << ',' << r.l2_rate << ','
+          << r.h1_rate << ','
           << r.time_setup << ',' << r.time_assembly << ',' << r.time_solve
           << ',' << r.time_output << '\n';
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_iteration_table() const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0 ||
+        !scene.effects().contact)
+      return;
+    std::ofstream csv(parameters.output.directory + "/iterations.csv");
+    csv << "cycle,loop,uzawa_step,newton_step,newton_steps,cg_iterations,"
+           "amg_setups,n_active,gradient,step_length,change_l1,change_v,"
+           "violation,complementarity,time\n";
+    csv << std::setprecision(8);
+    for (const IterationRecord &r : iteration_log)
+      csv << r.cycle << ',' << r.loop << ',' << r.uzawa_step << ','
+          << r.index << ',' << r.newton_steps << ',' << r.cg_iterations << ','
+          << r.amg_setups << ',' << r.n_active << ',' << r.gradient << ','
+          << r.step_length << ',' << r.change_l1 << ',' << r.change_v << ','
+          << r.violation << ',' << r.complementarity << ',' << r.time << '\n';
   }
 
   template <int dim>
@@ -268,8 +478,24 @@ namespace dualcontact
         result.time_assembly = timed("assemble", [&] { assemble_system(); });
         pcout << "   assembled A and b" << seconds(result.time_assembly) << '\n';
         result.time_solve = timed("solve", [&] { solve(); });
-        pcout << "   one linear elasticity solve: " << result.linear_iterations
-              << " CG iterations" << seconds(result.time_solve) << '\n';
+        if (scene.effects().contact)
+          pcout << "   contact solved: " << result.uzawa_steps
+                << " Uzawa steps, " << result.newton_steps
+                << " Newton steps, " << result.linear_iterations
+                << " CG iterations, " << result.amg_setups << " AMG set-ups, "
+                << result.n_active << " of " << result.n_contact_nodes
+                << " nodes in contact" << seconds(result.time_solve) << '\n'
+                << std::setprecision(8) << "   total contact force "
+                << result.contact_force << ", peak pressure "
+                << result.max_pressure << ", contact half-width "
+                << result.contact_half_width;
+        if (scene.exact_pressure() != nullptr)
+          pcout << ", pressure error (rel. L2) " << result.pressure_error;
+        if (scene.effects().contact)
+          pcout << std::defaultfloat << '\n';
+        else
+          pcout << "   one linear elasticity solve: " << result.linear_iterations
+                << " CG iterations" << seconds(result.time_solve) << '\n';
 
         timed("postprocess", [&] { postprocess(result); });
         pcout << std::scientific << std::setprecision(6)
@@ -282,6 +508,7 @@ namespace dualcontact
         result.time_output =
           timed("output", [&] { output_results(cycle); });
         write_cycle_table();
+        write_iteration_table();
       }
 
     if (scene.exact_displacement() != nullptr)

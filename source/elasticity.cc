@@ -20,7 +20,8 @@ namespace dualcontact
                       const Scene<dim>                &scene,
                       const AffineConstraints<double> &constraints,
                       TrilinosWrappers::SparseMatrix  &system_matrix,
-                      TrilinosWrappers::MPI::Vector   &system_rhs)
+                      TrilinosWrappers::MPI::Vector   &system_rhs,
+                      TrilinosWrappers::SparseMatrix  *mass_matrix)
   {
     const FiniteElement<dim> &fe     = dof_handler.get_fe();
     const double              lambda = scene.parameters.material.lambda();
@@ -41,6 +42,7 @@ namespace dualcontact
 
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
     Vector<double>     cell_rhs(dofs_per_cell);
     std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
 
@@ -56,11 +58,14 @@ namespace dualcontact
 
     system_matrix = 0;
     system_rhs    = 0;
+    if (mass_matrix != nullptr)
+      *mass_matrix = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           cell_matrix = 0;
+          cell_mass   = 0;
           cell_rhs    = 0;
           if (body_force != nullptr)
             body_force->vector_value_list(fe_values.get_quadrature_points(),
@@ -81,6 +86,12 @@ namespace dualcontact
                     cell_matrix(i, j) +=
                       (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
                       JxW;
+                  if (mass_matrix != nullptr)
+                    for (unsigned int j = 0; j <= i; ++j)
+                      if (fe.system_to_component_index(i).first ==
+                          fe.system_to_component_index(j).first)
+                        cell_mass(i, j) += fe_values.shape_value(i, q) *
+                                           fe_values.shape_value(j, q) * JxW;
                   if (body_force != nullptr)
                     {
                       const unsigned int c = fe.system_to_component_index(i).first;
@@ -91,7 +102,10 @@ namespace dualcontact
             }
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-              cell_matrix(i, j) = cell_matrix(j, i);
+              {
+                cell_matrix(i, j) = cell_matrix(j, i);
+                cell_mass(i, j)   = cell_mass(j, i);
+              }
 
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary() && traction_ids.count(face->boundary_id()))
@@ -119,9 +133,15 @@ namespace dualcontact
                                                  local_dof_indices,
                                                  system_matrix,
                                                  system_rhs);
+          if (mass_matrix != nullptr)
+            constraints.distribute_local_to_global(cell_mass,
+                                                   local_dof_indices,
+                                                   *mass_matrix);
         }
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
+    if (mass_matrix != nullptr)
+      mass_matrix->compress(VectorOperation::add);
   }
 
   template <int dim>
@@ -178,15 +198,30 @@ namespace dualcontact
 
   template <int dim>
   void
-  ElasticSolver<dim>::initialize(const Mapping<dim>                   &mapping,
-                                 const DoFHandler<dim>                &dof_handler,
-                                 const TrilinosWrappers::SparseMatrix &matrix,
-                                 const Point<dim>                     &center,
-                                 const double                          length)
+  ElasticSolver<dim>::set_near_null_space(
+    const Mapping<dim>                   &mapping,
+    const DoFHandler<dim>                &dof_handler,
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const Point<dim>                     &center,
+    const double                          length)
   {
+    higher_order = dof_handler.get_fe().degree > 1;
+    modes        = rigid_body_modes(mapping,
+                             dof_handler,
+                             matrix,
+                             parameters.amg_rotation_modes,
+                             center,
+                             length);
+  }
+
+  template <int dim>
+  void
+  ElasticSolver<dim>::initialize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    Assert(modes != nullptr, ExcMessage("set_near_null_space() first"));
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
-    data.higher_order_elements = dof_handler.get_fe().degree > 1;
+    data.higher_order_elements = higher_order;
     data.smoother_sweeps       = 2;
     data.aggregation_threshold = 0.02;
 
@@ -195,12 +230,6 @@ namespace dualcontact
     Teuchos::ParameterList              list;
     std::unique_ptr<Epetra_MultiVector> unused;
     data.set_parameters(list, unused, matrix);
-    modes = rigid_body_modes(mapping,
-                             dof_handler,
-                             matrix,
-                             parameters.amg_rotation_modes,
-                             center,
-                             length);
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", modes->NumVectors());
     list.set("null space: vectors", modes->Values());
@@ -254,7 +283,8 @@ namespace dualcontact
                                          const Scene<dim> &,                  \
                                          const AffineConstraints<double> &,   \
                                          TrilinosWrappers::SparseMatrix &,    \
-                                         TrilinosWrappers::MPI::Vector &);    \
+                                         TrilinosWrappers::MPI::Vector &,     \
+                                         TrilinosWrappers::SparseMatrix *);   \
   template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(         \
     const Mapping<dim> &,                                                     \
     const DoFHandler<dim> &,                                                  \

@@ -217,7 +217,15 @@ namespace dualcontact
                       "0",
                       Patterns::Double(0.),
                       "Distance from the foundation plane within which cells "
-                      "are pre-refined [length].");
+                      "are pre-refined in the first step [length].");
+    prm.declare_entry(
+      "Pre-refinement grading",
+      "1",
+      Patterns::Double(0., 1.),
+      "Factor in (0, 1] by which the pre-refinement distance shrinks from one "
+      "step to the next [-]: 1 refines the same band every step (a sharp "
+      "jump in cell size at its edge), 0.5 gives a graded mesh whose cells "
+      "grow with the distance from the foundation.");
     prm.leave_subsection();
   }
 
@@ -238,6 +246,7 @@ namespace dualcontact
     radius                  = prm.get_double("Radius");
     pre_refinement_steps    = prm.get_integer("Pre-refinement steps");
     pre_refinement_distance = prm.get_double("Pre-refinement distance");
+    pre_refinement_grading  = prm.get_double("Pre-refinement grading");
     prm.leave_subsection();
   }
 
@@ -474,6 +483,70 @@ namespace dualcontact
       Patterns::Bool(),
       "Give the algebraic multigrid all rigid-body modes (translations and "
       "rotations) as near-null space; false gives it the translations only.");
+
+    prm.declare_entry(
+      "Augmentation parameter",
+      "10",
+      Patterns::Double(0.),
+      "r_rel [-], > 0: the augmentation parameter of the modified Lagrangian "
+      "is r = r_rel E / h_C [stress/length], with h_C the smallest face "
+      "diameter on the contact boundary. Any r > 0 converges; larger r "
+      "means fewer Uzawa steps and harder Newton problems.");
+    prm.declare_entry(
+      "Proximal parameter",
+      "1e-2",
+      Patterns::Double(0.),
+      "chi_rel [-], > 0: the proximal weight is chi = chi_rel E / L^2 "
+      "[stress/length^2], with L the body's size (longest side, or radius). "
+      "It makes each Uzawa step strongly convex, also when only contact "
+      "holds the body.");
+    prm.declare_entry("Uzawa tolerance",
+                      "1e-8",
+                      Patterns::Double(1e-15, 1.),
+                      "Loop 2 stops when the relative changes of l1 and of v "
+                      "and the relative constraint violation are all below "
+                      "this [-].");
+    prm.declare_entry("Maximum Uzawa steps",
+                      "500",
+                      Patterns::Integer(1),
+                      "Loop 2 gives up (with an error) after this many steps "
+                      "[-].");
+    prm.declare_entry(
+      "Newton tolerance factor",
+      "1e-2",
+      Patterns::Double(1e-8, 1.),
+      "Loop 3's final tolerance on the relative gradient is this factor "
+      "times the Uzawa tolerance [-] (at most 0.01 is advised).");
+    prm.declare_entry(
+      "Initial inner tolerance",
+      "1e-2",
+      Patterns::Double(0., 1.),
+      "Loop 3's relative gradient tolerance in the first Uzawa step [-]; it "
+      "shrinks geometrically from step to step (summable errors, as the "
+      "convergence theorem needs) down to the final tolerance.");
+    prm.declare_entry("Inner tolerance reduction",
+                      "0.1",
+                      Patterns::Double(0., 1.),
+                      "Factor by which loop 3's tolerance shrinks per Uzawa "
+                      "step [-], in (0, 1).");
+    prm.declare_entry("Maximum Newton steps",
+                      "50",
+                      Patterns::Integer(1),
+                      "Loop 3 gives up (with an error) after this many steps "
+                      "in one Uzawa step [-].");
+    prm.declare_entry("Line search",
+                      "true",
+                      Patterns::Bool(),
+                      "Backtracking (Armijo) line search on the Uzawa step's "
+                      "functional; makes Newton globally convergent.");
+    prm.declare_entry(
+      "AMG rebuild fraction",
+      "0.05",
+      Patterns::Double(0., 1.),
+      "Rebuild the AMG preconditioner of the Newton matrix only when the "
+      "number of contact nodes that changed status since it was built "
+      "exceeds this fraction of the active set [-]; 0 rebuilds it at every "
+      "Newton step.");
     prm.leave_subsection();
   }
 
@@ -484,7 +557,30 @@ namespace dualcontact
     linear_tolerance      = prm.get_double("Linear solver tolerance");
     max_linear_iterations = prm.get_integer("Maximum linear iterations");
     amg_rotation_modes    = prm.get_bool("AMG with rotation modes");
+    augmentation          = prm.get_double("Augmentation parameter");
+    proximal              = prm.get_double("Proximal parameter");
+    uzawa_tolerance       = prm.get_double("Uzawa tolerance");
+    max_uzawa_steps       = prm.get_integer("Maximum Uzawa steps");
+    newton_tolerance_factor   = prm.get_double("Newton tolerance factor");
+    initial_inner_tolerance   = prm.get_double("Initial inner tolerance");
+    inner_tolerance_reduction = prm.get_double("Inner tolerance reduction");
+    max_newton_steps          = prm.get_integer("Maximum Newton steps");
+    line_search               = prm.get_bool("Line search");
+    amg_rebuild_fraction      = prm.get_double("AMG rebuild fraction");
     prm.leave_subsection();
+    if (!(augmentation > 0.))
+      throw InputError("The entry <Solver/Augmentation parameter> must be "
+                       "positive.",
+                       exit_invalid_value);
+    if (!(proximal > 0.))
+      throw InputError("The entry <Solver/Proximal parameter> must be "
+                       "positive (chi = 0 leaves semi-coercive scenes "
+                       "singular).",
+                       exit_invalid_value);
+    if (!(inner_tolerance_reduction > 0. && inner_tolerance_reduction < 1.))
+      throw InputError("The entry <Solver/Inner tolerance reduction> must lie "
+                       "in (0, 1).",
+                       exit_invalid_value);
   }
 
   // ------------------------------------------------------------ Refinement
@@ -570,6 +666,15 @@ namespace dualcontact
       "If known, the exact displacement 'u_x; u_y' [length] as expressions "
       "in x, y (z) with the constants pi, E, nu, lambda, mu; the L2 and H1 "
       "errors are then reported per cycle. Empty: none is known.");
+    prm.declare_entry(
+      "Contact pressure",
+      "",
+      Patterns::Anything(),
+      "If known, the exact contact pressure p = -sigma_n on the contact "
+      "boundary [stress], an expression in x, y (z) with the constants pi, "
+      "E, nu, lambda, mu (functions such as sqrt, max may be used); the "
+      "relative L2 error of l1 on Gamma_C is then reported per cycle. "
+      "Empty: none is known.");
     prm.leave_subsection();
   }
 
@@ -577,7 +682,8 @@ namespace dualcontact
   ExactSolutionParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Exact solution");
-    displacement = Utilities::trim(prm.get("Displacement"));
+    displacement     = Utilities::trim(prm.get("Displacement"));
+    contact_pressure = Utilities::trim(prm.get("Contact pressure"));
     prm.leave_subsection();
   }
 

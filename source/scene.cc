@@ -28,7 +28,8 @@ namespace dualcontact
     make_function(const std::string          &expression,
                   const unsigned int          n_components,
                   const MaterialParameters   &material,
-                  const std::string          &entry)
+                  const std::string          &entry,
+                  const double                length)
     {
       const std::map<std::string, double> constants = {
         {"pi", numbers::PI},
@@ -47,7 +48,12 @@ namespace dualcontact
                            std::to_string(n_given) + ": '" + expression + "'.",
                          exit_invalid_value);
 
-      auto function = std::make_unique<FunctionParser<dim>>(n_components);
+      // Gradients (for H1 errors) by fourth-order differences with a step
+      // relative to the body's size.
+      auto function = std::make_unique<FunctionParser<dim>>(n_components,
+                                                            0.,
+                                                            1e-4 * length);
+      function->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
       try
         {
           function->initialize(variables, expression, constants);
@@ -106,6 +112,7 @@ namespace dualcontact
 
     const MaterialParameters &material = parameters.material;
     const BoundaryParameters &boundary = parameters.boundary;
+    const double              length   = characteristic_length();
 
     for (const types::boundary_id id : ids_with(BoundaryCondition::fixed))
       {
@@ -115,7 +122,8 @@ namespace dualcontact
             make_function<dim>(it->second,
                                dim,
                                material,
-                               "Boundary conditions/Displacements");
+                               "Boundary conditions/Displacements",
+                               length);
       }
     for (const types::boundary_id id : ids_with(BoundaryCondition::traction))
       {
@@ -124,23 +132,34 @@ namespace dualcontact
           tractions[id] = make_function<dim>(expression,
                                              dim,
                                              material,
-                                             "Boundary conditions/Tractions");
+                                             "Boundary conditions/Tractions",
+                               length);
       }
     if (!is_zero_expression(parameters.loads.body_force))
       body_force_ = make_function<dim>(parameters.loads.body_force,
                                        dim,
                                        material,
-                                       "Loads/Body force");
+                                       "Loads/Body force",
+                               length);
     else
       make_function<dim>(parameters.loads.body_force,
                          dim,
                          material,
-                         "Loads/Body force"); // checks the component count
+                         "Loads/Body force",
+                               length); // checks the component count
     if (!parameters.exact.displacement.empty())
       exact_ = make_function<dim>(parameters.exact.displacement,
                                   dim,
                                   material,
-                                  "Exact solution/Displacement");
+                                  "Exact solution/Displacement",
+                               length);
+
+    if (!parameters.exact.contact_pressure.empty())
+      exact_pressure_ = make_function<dim>(parameters.exact.contact_pressure,
+                                           1,
+                                           material,
+                                           "Exact solution/Contact pressure",
+                               length);
 
     foundation_point  = to_point<dim>(parameters.foundation.point);
     foundation_normal = to_point<dim>(parameters.foundation.normal);
@@ -254,12 +273,14 @@ namespace dualcontact
 
     triangulation.refine_global(parameters.refinement.initial_global_refinement);
 
-    for (unsigned int step = 0; step < g.pre_refinement_steps; ++step)
+    double distance = g.pre_refinement_distance;
+    for (unsigned int step = 0; step < g.pre_refinement_steps;
+         ++step, distance *= g.pre_refinement_grading)
       {
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             for (const unsigned int v : cell->vertex_indices())
-              if (initial_gap(cell->vertex(v)) <= g.pre_refinement_distance)
+              if (initial_gap(cell->vertex(v)) <= distance)
                 {
                   cell->set_refine_flag();
                   break;

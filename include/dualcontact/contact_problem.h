@@ -19,9 +19,11 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dualcontact/contact_set.h>
 #include <dualcontact/elasticity.h>
 #include <dualcontact/parameters.h>
 #include <dualcontact/scene.h>
+#include <dualcontact/uzawa_solver.h>
 
 #include <iostream>
 #include <vector>
@@ -42,6 +44,20 @@ namespace dualcontact
     double                  h1_error          = 0.;
     double                  l2_rate           = 0.; // log2(e_{k-1}/e_k)
     double                  h1_rate           = 0.;
+    // contact (zero without a contact boundary)
+    types::global_dof_index n_contact_nodes   = 0;
+    types::global_dof_index n_active          = 0;
+    unsigned int            uzawa_steps       = 0;
+    unsigned int            newton_steps      = 0;
+    unsigned int            amg_setups        = 0;
+    double                  contact_force     = 0.; // sum_s m_s l1_s
+    double                  max_pressure      = 0.; // max_s l1_s
+    double                  contact_half_width = 0.; // 2D: half the extent
+                                                     // of the active nodes
+                                                     // along t
+    double                  pressure_error    = 0.; // relative, nodal L2
+    double                  r                 = 0.; // augmentation used
+    double                  chi               = 0.; // proximal weight used
     double                  time_setup        = 0.; // wall times [s]
     double                  time_assembly     = 0.;
     double                  time_solve        = 0.;
@@ -73,6 +89,33 @@ namespace dualcontact
       return cycle_results;
     }
 
+    /** Every Newton and Uzawa step of every cycle (empty without contact). */
+    const std::vector<IterationRecord> &
+    iterations() const
+    {
+      return iteration_log;
+    }
+
+    /** The contact nodes of this rank with their multipliers (last cycle). */
+    const ContactSet<dim> &
+    contact() const
+    {
+      return contact_set;
+    }
+
+    /** The displacement of the last cycle (ghosted). */
+    const TrilinosWrappers::MPI::Vector &
+    displacement() const
+    {
+      return solution;
+    }
+
+    const Scene<dim> &
+    get_scene() const
+    {
+      return scene;
+    }
+
   private:
     void
     make_grid();
@@ -83,11 +126,17 @@ namespace dualcontact
     void
     solve();
     void
+    solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
+    void
+    solve_contact(TrilinosWrappers::MPI::Vector &v);
+    void
     postprocess(CycleResult &result);
     void
     output_results(const unsigned int cycle);
     void
     write_cycle_table() const;
+    void
+    write_iteration_table() const;
     void
     refine_mesh();
     void
@@ -108,16 +157,26 @@ namespace dualcontact
     const FESystem<dim>                       fe;
     DoFHandler<dim>                           dof_handler;
 
-    // index sets and constraints (hanging nodes, then Dirichlet, then sliders)
+    // index sets and constraints: hanging nodes alone; all of them (hanging
+    // nodes, then Dirichlet, then sliders); and all with zero values, for
+    // Newton updates
     IndexSet                  locally_owned_dofs;
     IndexSet                  locally_relevant_dofs;
+    AffineConstraints<double> hanging_node_constraints;
     AffineConstraints<double> constraints;
+    AffineConstraints<double> homogeneous_constraints;
 
     // linear algebra
     TrilinosWrappers::SparseMatrix system_matrix;
     TrilinosWrappers::MPI::Vector  system_rhs;
-    TrilinosWrappers::MPI::Vector  solution; // ghosted
+    TrilinosWrappers::SparseMatrix mass_matrix; // only with contact
+    TrilinosWrappers::MPI::Vector  solution;    // ghosted
     ElasticSolver<dim>             elastic_solver;
+
+    // contact: nodes and multipliers, loops 2 and 3, their log
+    ContactSet<dim>              contact_set;
+    UzawaSolver<dim>             uzawa_solver;
+    std::vector<IterationRecord> iteration_log;
 
     // per-cycle figures, and the (cycle, file) list of the .pvd record
     std::vector<CycleResult>                      cycle_results;

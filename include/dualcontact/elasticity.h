@@ -30,6 +30,8 @@ namespace dualcontact
    * load vector b = int f.v + int_{Gamma_N} T.v, with the constraints
    * (hanging nodes, Dirichlet, sliders) applied. Loads the scene does not
    * have are not assembled. The matrix must already have its sparsity pattern.
+   * If `mass_matrix` is given, the L2 mass matrix M (int u.v) is assembled
+   * into it in the same pass, with the same constraints.
    */
   template <int dim>
   void
@@ -38,7 +40,8 @@ namespace dualcontact
                       const Scene<dim>                 &scene,
                       const AffineConstraints<double>  &constraints,
                       TrilinosWrappers::SparseMatrix   &system_matrix,
-                      TrilinosWrappers::MPI::Vector    &system_rhs);
+                      TrilinosWrappers::MPI::Vector    &system_rhs,
+                      TrilinosWrappers::SparseMatrix   *mass_matrix = nullptr);
 
   /**
    * The rigid-body modes of the displacement space (dim translations and
@@ -66,13 +69,20 @@ namespace dualcontact
   public:
     explicit ElasticSolver(const SolverParameters &parameters);
 
-    /** Build the AMG hierarchy for `matrix`, with the rigid-body modes. */
+    /**
+     * Compute the rigid-body modes handed to the AMG as near-null space;
+     * once per mesh, with any matrix that has the mesh's row distribution.
+     */
     void
-    initialize(const Mapping<dim>                   &mapping,
-               const DoFHandler<dim>                &dof_handler,
-               const TrilinosWrappers::SparseMatrix &matrix,
-               const Point<dim>                     &center,
-               const double                          length);
+    set_near_null_space(const Mapping<dim>                   &mapping,
+                        const DoFHandler<dim>                &dof_handler,
+                        const TrilinosWrappers::SparseMatrix &matrix,
+                        const Point<dim>                     &center,
+                        const double                          length);
+
+    /** Build the AMG hierarchy for `matrix` (after set_near_null_space). */
+    void
+    initialize(const TrilinosWrappers::SparseMatrix &matrix);
 
     /**
      * Solve matrix x = rhs by CG to the relative tolerance `tolerance` (the
@@ -93,6 +103,7 @@ namespace dualcontact
 
   private:
     const SolverParameters                              &parameters;
+    bool                                                 higher_order = false;
     std::unique_ptr<Epetra_MultiVector>                  modes;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG>   preconditioner;
   };

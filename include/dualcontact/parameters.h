@@ -59,6 +59,7 @@ namespace dualcontact
     double                    radius = 1.;
     unsigned int              pre_refinement_steps    = 0;
     double                    pre_refinement_distance = 0.;
+    double                    pre_refinement_grading  = 1.;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -137,12 +138,28 @@ namespace dualcontact
     parse_parameters(ParameterHandler &prm);
   };
 
-  /** The linear solver (CG + algebraic multigrid). */
+  /**
+   * The solvers: CG + algebraic multigrid for every linear system, and the
+   * Uzawa method (loop 2) with its inner semi-smooth Newton (loop 3).
+   */
   struct SolverParameters
   {
     double       linear_tolerance      = 1e-10;
     unsigned int max_linear_iterations = 2000;
     bool         amg_rotation_modes    = true;
+
+    // loop 2: Uzawa on the modified Lagrangian
+    double       augmentation        = 10.;   // r_rel: r = r_rel E / h_C
+    double       proximal            = 1e-2;  // chi_rel: chi = chi_rel E / L^2
+    double       uzawa_tolerance     = 1e-8;
+    unsigned int max_uzawa_steps     = 500;
+    // loop 3: semi-smooth Newton
+    double       newton_tolerance_factor   = 1e-2;
+    double       initial_inner_tolerance   = 1e-2;
+    double       inner_tolerance_reduction = 0.1;
+    unsigned int max_newton_steps          = 50;
+    bool         line_search               = true;
+    double       amg_rebuild_fraction      = 0.05;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -179,7 +196,8 @@ namespace dualcontact
   /** An exact solution, if the scene has one: errors are then reported. */
   struct ExactSolutionParameters
   {
-    std::string displacement; // empty: none known
+    std::string displacement;     // empty: none known
+    std::string contact_pressure; // empty: none known
 
     static void
     declare_parameters(ParameterHandler &prm);

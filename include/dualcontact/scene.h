@@ -79,6 +79,12 @@ namespace dualcontact
     {
       return body_force_.get();
     }
+    /** Exact contact pressure (scalar), or nullptr if none is known. */
+    const Function<dim> *
+    exact_pressure() const
+    {
+      return exact_pressure_.get();
+    }
     /** Exact displacement, or nullptr if none is known. */
     const Function<dim> *
     exact_displacement() const
@@ -115,6 +121,7 @@ namespace dualcontact
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> tractions;
     std::unique_ptr<Function<dim>>                               body_force_;
     std::unique_ptr<Function<dim>>                               exact_;
+    std::unique_ptr<Function<dim>>                               exact_pressure_;
     Functions::ZeroFunction<dim> zero{dim};
   };
 } // namespace dualcontact

@@ -1,0 +1,113 @@
+// The discrete contact boundary (DESIGN.md §3): the contact nodes on Gamma_C
+// with their nodal-quadrature weights m_s, the foundation normal n and
+// tangent t, the initial gaps g0, and the multipliers that live on them.
+#ifndef dualcontact_contact_set_h
+#define dualcontact_contact_set_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dualcontact/scene.h>
+
+#include <array>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /** One contact node s: a support point on Gamma_C that is not hanging. */
+  template <int dim>
+  struct ContactNode
+  {
+    std::array<types::global_dof_index, dim> dofs; // one per component
+    Point<dim>                               position;
+    double                                   weight = 0.; // m_s = int phi_s
+    double                                   gap0   = 0.; // g0(x_s)
+  };
+
+  /**
+   * The contact nodes owned by this rank, and the multipliers on them.
+   *
+   * The body's normal on Gamma_C is n = -m (m: the foundation's normal into
+   * the body), so v_n = v.n > 0 moves the body toward the foundation and the
+   * non-penetration condition reads v_n(s) <= g0(s) at every node.
+   */
+  template <int dim>
+  class ContactSet
+  {
+  public:
+    /**
+     * Find the contact nodes on the boundary ids the scene marks 'contact'
+     * and compute their weights m_s = int_{Gamma_C} phi_s. The weight of a
+     * hanging node goes to the nodes it hangs on (through
+     * `hanging_node_constraints`), so sums over contact nodes remain exact
+     * quadratures. Nodes whose every component is otherwise constrained are
+     * left out. Multipliers are reset to zero.
+     */
+    void
+    setup(const Mapping<dim>              &mapping,
+          const DoFHandler<dim>           &dof_handler,
+          const AffineConstraints<double> &hanging_node_constraints,
+          const AffineConstraints<double> &all_constraints,
+          const Scene<dim>                &scene);
+
+    /** Normal displacement v_n(s) = v(s).n at local node s (owned entries). */
+    double
+    normal_displacement(const TrilinosWrappers::MPI::Vector &v,
+                        const unsigned int                   s) const
+    {
+      double vn = 0;
+      for (unsigned int c = 0; c < dim; ++c)
+        vn += v[nodes[s].dofs[c]] * normal[c];
+      return vn;
+    }
+
+    /** Number of contact nodes on this rank and on all ranks. */
+    unsigned int
+    n_local_nodes() const
+    {
+      return nodes.size();
+    }
+    types::global_dof_index
+    n_global_nodes() const
+    {
+      return n_global;
+    }
+
+    /** Smallest diameter of a face on Gamma_C (over all ranks). */
+    double
+    min_face_diameter() const
+    {
+      return h_min_;
+    }
+
+    /** Sum of the weights over all ranks: the measure of Gamma_C. */
+    double
+    measure() const
+    {
+      return measure_;
+    }
+
+    std::vector<ContactNode<dim>> nodes;
+    Tensor<1, dim>                normal;  // n = -m, outward for the body
+    Tensor<1, dim>                tangent; // 2D: t = (-n_2, n_1)
+
+    /** Contact pressure multiplier l1 >= 0, one per local node. */
+    std::vector<double> l1;
+
+  private:
+    types::global_dof_index n_global = 0;
+    double                  h_min_   = 0.;
+    double                  measure_ = 0.;
+  };
+} // namespace dualcontact
+
+#endif

@@ -1,0 +1,127 @@
+// Loops 2 and 3 of DESIGN.md §2: the Uzawa method on the modified
+// Lagrangian with proximal regularisation, and the semi-smooth Newton method
+// with backtracking line search that solves each Uzawa step.
+#ifndef dualcontact_uzawa_solver_h
+#define dualcontact_uzawa_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dualcontact/contact_set.h>
+#include <dualcontact/elasticity.h>
+#include <dualcontact/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * The discrete problem one Uzawa solve works on, all condensed with the
+   * constraints: K = A + chi M, the mass matrix M, the load b, and r, chi.
+   */
+  struct ContactSystem
+  {
+    const TrilinosWrappers::SparseMatrix &stiffness; // K = A + chi M
+    const TrilinosWrappers::SparseMatrix &mass;      // M
+    const TrilinosWrappers::MPI::Vector  &load;      // b
+    const AffineConstraints<double>      &homogeneous_constraints;
+    double                                r;   // augmentation [stress/length]
+    double                                chi; // proximal [stress/length^2]
+  };
+
+  /** One row of the iteration log: a Newton step or an Uzawa step. */
+  struct IterationRecord
+  {
+    std::string             loop; // "newton" or "uzawa"
+    unsigned int            cycle         = 0;
+    unsigned int            uzawa_step    = 0;
+    unsigned int            index         = 0; // Newton step (newton rows)
+    unsigned int            newton_steps  = 0; // uzawa rows: steps of loop 3
+    unsigned int            cg_iterations = 0;
+    unsigned int            amg_setups    = 0;
+    types::global_dof_index n_active      = 0;
+    double gradient        = 0.; // newton: |grad M_k| / |b| before the step
+    double step_length     = 0.; // newton: alpha of the line search
+    double change_l1       = 0.; // uzawa: |l1_new - l1| / |l1_new|
+    double change_v        = 0.; // uzawa: |v_new - v| / |v_new|
+    double violation       = 0.; // uzawa: max (v_n - g0)^+ / |v|_inf
+    double complementarity = 0.; // uzawa: max l1 |g0 - v_n| / (max l1 |v|_inf)
+    double time            = 0.; // wall time of the step [s]
+  };
+
+  /** Totals of one call of UzawaSolver::solve. */
+  struct ContactStatistics
+  {
+    unsigned int uzawa_steps   = 0;
+    unsigned int newton_steps  = 0;
+    unsigned int cg_iterations = 0;
+    unsigned int amg_setups    = 0;
+    types::global_dof_index n_active = 0;
+  };
+
+  template <int dim>
+  class UzawaSolver
+  {
+  public:
+    UzawaSolver(const SolverParameters &parameters,
+                ElasticSolver<dim>     &linear_solver,
+                ConditionalOStream     &pcout,
+                const bool              print_timing);
+
+    /**
+     * Loop 2. Starting from v (owned entries, satisfying the constraints)
+     * and the multipliers in `contact`, iterate
+     *   v^{k+1} = argmin M_k(v),  l1^{k+1} = (l1^k + r (v_n^{k+1} - g0))^+
+     * until the relative changes of l1 and v and the relative violation are
+     * below the Uzawa tolerance. Appends one record per Newton and per Uzawa
+     * step to `log`. Throws if it does not converge.
+     */
+    ContactStatistics
+    solve(const ContactSystem           &system,
+          ContactSet<dim>               &contact,
+          TrilinosWrappers::MPI::Vector &v,
+          std::vector<IterationRecord>  &log);
+
+  private:
+    /**
+     * Loop 3: minimise M_k(v) = 1/2 a(v,v) - L(v) + (chi/2)|v - v^k|_M^2
+     * + sum_s m_s/(2r) (((l1_s + r(v_n - g0))^+)^2 - l1_s^2) over v by
+     * semi-smooth Newton until |grad| <= tolerance |b|.
+     */
+    void
+    minimise(const ContactSystem                 &system,
+             const ContactSet<dim>               &contact,
+             const TrilinosWrappers::MPI::Vector &v_previous,
+             TrilinosWrappers::MPI::Vector       &v,
+             const double                         tolerance,
+             const unsigned int                   uzawa_step,
+             IterationRecord                     &step_record,
+             std::vector<IterationRecord>        &log);
+
+    /** z_s = l1_s + r (v_n(s) - g0_s) at every local contact node. */
+    void
+    augmented_pressures(const ContactSet<dim>               &contact,
+                        const TrilinosWrappers::MPI::Vector &v,
+                        const double                         r,
+                        std::vector<double>                 &z) const;
+
+    const SolverParameters &parameters;
+    ElasticSolver<dim>     &linear_solver;
+    ConditionalOStream     &pcout;
+    const bool              print_timing;
+
+    // the Newton matrix H = K + sum_active m_s r n n^T, and the active set
+    // it had when its AMG preconditioner was last built
+    TrilinosWrappers::SparseMatrix newton_matrix;
+    std::vector<bool>              amg_active_set;
+    bool                           amg_valid = false;
+  };
+} // namespace dualcontact
+
+#endif

@@ -1,0 +1,113 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <dualcontact/contact_set.h>
+
+#include <map>
+
+namespace dualcontact
+{
+  template <int dim>
+  void
+  ContactSet<dim>::setup(const Mapping<dim>              &mapping,
+                         const DoFHandler<dim>           &dof_handler,
+                         const AffineConstraints<double> &hanging_node_constraints,
+                         const AffineConstraints<double> &all_constraints,
+                         const Scene<dim>                &scene)
+  {
+    const MPI_Comm comm =
+      dof_handler.get_triangulation().get_communicator();
+    const FiniteElement<dim> &fe          = dof_handler.get_fe();
+    const IndexSet           &owned       = dof_handler.locally_owned_dofs();
+    const auto                contact_ids = scene.ids_with(BoundaryCondition::contact);
+
+    normal = -scene.foundation_normal;
+    tangent = Tensor<1, dim>();
+    if (dim == 2)
+      {
+        tangent[0] = -normal[1];
+        tangent[1] = normal[0];
+      }
+
+    // Weights m_s = int_{Gamma_C} phi_s, with the weight of hanging nodes
+    // handed to their masters. Every component carries the same weight.
+    TrilinosWrappers::MPI::Vector weights(owned, comm);
+    const QGauss<dim - 1>         quadrature(fe.degree + 1);
+    FEFaceValues<dim>             fe_face(mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_JxW_values);
+    Vector<double>                       local_weights(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+
+    // Candidate nodes: cell-local support points on contact faces, grouped
+    // by their scalar shape function (the "base" index).
+    std::map<types::global_dof_index, ContactNode<dim>> candidates;
+    double                                             h_min =
+      std::numeric_limits<double>::max();
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()))
+            {
+              h_min = std::min(h_min, cell->face(f)->diameter());
+              cell->get_dof_indices(dof_indices);
+              fe_face.reinit(cell, f);
+              local_weights = 0;
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  local_weights(i) +=
+                    fe_face.shape_value(i, q) * fe_face.JxW(q);
+              hanging_node_constraints.distribute_local_to_global(local_weights,
+                                                                  dof_indices,
+                                                                  weights);
+
+              std::map<unsigned int, ContactNode<dim>> on_face;
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                if (fe.has_support_on_face(i, f))
+                  {
+                    const auto [component, base] = fe.system_to_component_index(i);
+                    ContactNode<dim> &node = on_face[base];
+                    node.dofs[component]   = dof_indices[i];
+                    if (component == 0)
+                      node.position = mapping.transform_unit_to_real_cell(
+                        cell, fe.unit_support_point(i));
+                  }
+              for (const auto &[base, node] : on_face)
+                candidates.emplace(node.dofs[0], node);
+            }
+    weights.compress(VectorOperation::add);
+
+    nodes.clear();
+    for (auto &[key, node] : candidates)
+      {
+        if (!owned.is_element(key) ||
+            hanging_node_constraints.is_constrained(key))
+          continue;
+        bool any_free = false;
+        for (unsigned int c = 0; c < dim; ++c)
+          any_free |= !all_constraints.is_constrained(node.dofs[c]);
+        if (!any_free || !(weights[key] > 0.))
+          continue;
+        node.weight = weights[key];
+        node.gap0   = scene.initial_gap(node.position);
+        nodes.push_back(node);
+      }
+
+    l1.assign(nodes.size(), 0.);
+    n_global = Utilities::MPI::sum<types::global_dof_index>(nodes.size(), comm);
+    h_min_   = Utilities::MPI::min(h_min, comm);
+    double local_measure = 0;
+    for (const auto &node : nodes)
+      local_measure += node.weight;
+    measure_ = Utilities::MPI::sum(local_measure, comm);
+  }
+
+  template class ContactSet<2>;
+  template class ContactSet<3>;
+} // namespace dualcontact

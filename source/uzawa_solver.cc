@@ -1,0 +1,340 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <dualcontact/uzawa_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dualcontact
+{
+  namespace
+  {
+    // |difference| / |reference|, with 0/0 = 0 and x/0 = 1.
+    double
+    relative(const double difference, const double reference)
+    {
+      if (reference > 0.)
+        return difference / reference;
+      return difference > 0. ? 1. : 0.;
+    }
+
+    double
+    positive_part(const double x)
+    {
+      return x > 0. ? x : 0.;
+    }
+  } // namespace
+
+  template <int dim>
+  UzawaSolver<dim>::UzawaSolver(const SolverParameters &parameters,
+                                ElasticSolver<dim>     &linear_solver,
+                                ConditionalOStream     &pcout,
+                                const bool              print_timing)
+    : parameters(parameters)
+    , linear_solver(linear_solver)
+    , pcout(pcout)
+    , print_timing(print_timing)
+  {}
+
+  template <int dim>
+  void
+  UzawaSolver<dim>::augmented_pressures(
+    const ContactSet<dim>               &contact,
+    const TrilinosWrappers::MPI::Vector &v,
+    const double                         r,
+    std::vector<double>                 &z) const
+  {
+    z.resize(contact.n_local_nodes());
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      z[s] = contact.l1[s] +
+             r * (contact.normal_displacement(v, s) - contact.nodes[s].gap0);
+  }
+
+  template <int dim>
+  ContactStatistics
+  UzawaSolver<dim>::solve(const ContactSystem           &system,
+                          ContactSet<dim>               &contact,
+                          TrilinosWrappers::MPI::Vector &v,
+                          std::vector<IterationRecord>  &log)
+  {
+    const MPI_Comm comm = v.get_mpi_communicator();
+    const double   tolerance = parameters.uzawa_tolerance;
+    const double   final_inner_tolerance =
+      parameters.newton_tolerance_factor * tolerance;
+
+    ContactStatistics statistics;
+    amg_valid = false; // a new system: build the preconditioner afresh
+
+    TrilinosWrappers::MPI::Vector v_previous(v);
+    std::vector<double>           z;
+
+    for (unsigned int k = 1; k <= parameters.max_uzawa_steps; ++k)
+      {
+        Timer timer(comm, true);
+        v_previous = v;
+
+        // Loop 3 to a tolerance that shrinks geometrically (summable errors).
+        const double inner_tolerance =
+          std::max(final_inner_tolerance,
+                   parameters.initial_inner_tolerance *
+                     std::pow(parameters.inner_tolerance_reduction, k - 1.));
+        IterationRecord record;
+        record.loop       = "uzawa";
+        record.uzawa_step = k;
+        minimise(system, contact, v_previous, v, inner_tolerance, k, record, log);
+
+        // Multiplier update l1 <- (l1 + r (v_n - g0))^+ and the measures of
+        // convergence, all reduced over the ranks.
+        augmented_pressures(contact, v, system.r, z);
+        double                  l1_change2 = 0, l1_norm2 = 0, l1_max = 0;
+        double                  violation = 0, complementarity = 0;
+        types::global_dof_index n_active  = 0;
+        for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+          {
+            const double l1_new = positive_part(z[s]);
+            const double gap =
+              contact.nodes[s].gap0 - contact.normal_displacement(v, s);
+            l1_change2 += std::pow(l1_new - contact.l1[s], 2);
+            l1_norm2 += l1_new * l1_new;
+            l1_max          = std::max(l1_max, l1_new);
+            violation       = std::max(violation, positive_part(-gap));
+            complementarity = std::max(complementarity, l1_new * std::abs(gap));
+            n_active += (l1_new > 0.);
+            contact.l1[s] = l1_new;
+          }
+        l1_change2      = Utilities::MPI::sum(l1_change2, comm);
+        l1_norm2        = Utilities::MPI::sum(l1_norm2, comm);
+        l1_max          = Utilities::MPI::max(l1_max, comm);
+        violation       = Utilities::MPI::max(violation, comm);
+        complementarity = Utilities::MPI::max(complementarity, comm);
+        n_active        = Utilities::MPI::sum(n_active, comm);
+
+        const double v_norm_inf = v.linfty_norm();
+        v_previous.sadd(-1., 1., v); // now v - v_previous
+        record.change_l1       = relative(std::sqrt(l1_change2), std::sqrt(l1_norm2));
+        record.change_v        = relative(v_previous.l2_norm(), v.l2_norm());
+        record.violation       = relative(violation, v_norm_inf);
+        record.complementarity = relative(complementarity, l1_max * v_norm_inf);
+        record.n_active        = n_active;
+        timer.stop();
+        record.time = timer.wall_time();
+        log.push_back(record);
+
+        statistics.uzawa_steps = k;
+        statistics.newton_steps += record.newton_steps;
+        statistics.cg_iterations += record.cg_iterations;
+        statistics.amg_setups += record.amg_setups;
+        statistics.n_active = n_active;
+
+        std::ostringstream line;
+        line << "   Uzawa " << std::setw(4) << k << ": Newton " << std::setw(2)
+             << record.newton_steps << ", CG " << std::setw(4)
+             << record.cg_iterations << ", active " << std::setw(6) << n_active
+             << std::scientific << std::setprecision(2)
+             << ", d(l1) " << record.change_l1 << ", d(v) " << record.change_v
+             << ", violation " << record.violation << ", compl. "
+             << record.complementarity;
+        if (print_timing)
+          line << std::fixed << std::setprecision(3) << "  (" << record.time
+               << " s)";
+        pcout << line.str() << std::endl;
+
+        if (record.change_l1 <= tolerance && record.change_v <= tolerance &&
+            record.violation <= tolerance)
+          return statistics;
+      }
+
+    AssertThrow(false,
+                ExcMessage("The Uzawa method did not converge in " +
+                           std::to_string(parameters.max_uzawa_steps) +
+                           " steps (<Solver/Maximum Uzawa steps>). Raise the "
+                           "limit or <Solver/Augmentation parameter>, or check "
+                           "that the foundation can hold the load."));
+    return statistics;
+  }
+
+  template <int dim>
+  void
+  UzawaSolver<dim>::minimise(const ContactSystem                 &system,
+                             const ContactSet<dim>               &contact,
+                             const TrilinosWrappers::MPI::Vector &v_previous,
+                             TrilinosWrappers::MPI::Vector       &v,
+                             const double                         tolerance,
+                             const unsigned int                   uzawa_step,
+                             IterationRecord                     &step_record,
+                             std::vector<IterationRecord>        &log)
+  {
+    const MPI_Comm  comm = v.get_mpi_communicator();
+    const auto     &K    = system.stiffness;
+    const auto     &constraints = system.homogeneous_constraints;
+    const double    r           = system.r;
+    const unsigned  n_nodes     = contact.n_local_nodes();
+    const double    load_norm   = system.load.l2_norm();
+    const double    reference   = load_norm > 0. ? load_norm : 1.;
+
+    // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k.
+    TrilinosWrappers::MPI::Vector rhs(system.load), tmp(system.load);
+    system.mass.vmult(tmp, v_previous);
+    rhs.add(system.chi, tmp);
+
+    TrilinosWrappers::MPI::Vector smooth_gradient(rhs), gradient(rhs),
+      direction(rhs), direction_free(rhs), newton_rhs(rhs);
+    std::vector<double> z, dn(n_nodes);
+    std::vector<bool>   active(n_nodes);
+    Vector<double>      local_vector(dim);
+    FullMatrix<double>  local_matrix(dim, dim);
+    std::vector<types::global_dof_index> local_dofs(dim);
+    const Tensor<1, dim> &n = contact.normal;
+
+    for (unsigned int j = 0;; ++j)
+      {
+        Timer timer(comm, true);
+        // gradient of M_k (constrained rows are zero: they are not unknowns)
+        augmented_pressures(contact, v, r, z);
+        K.vmult(smooth_gradient, v);
+        smooth_gradient -= rhs;
+        constraints.set_zero(smooth_gradient);
+        gradient = smooth_gradient;
+        for (unsigned int s = 0; s < n_nodes; ++s)
+          if (z[s] > 0.)
+            {
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  local_vector(c) = contact.nodes[s].weight * z[s] * n[c];
+                  local_dofs[c]   = contact.nodes[s].dofs[c];
+                }
+              constraints.distribute_local_to_global(local_vector,
+                                                     local_dofs,
+                                                     gradient);
+            }
+        gradient.compress(VectorOperation::add);
+
+        IterationRecord record;
+        record.loop       = "newton";
+        record.uzawa_step = uzawa_step;
+        record.index      = j;
+        record.gradient   = gradient.l2_norm() / reference;
+
+        // Where z = 0 (touching, e.g. at zero initial gap) the generalised
+        // derivative may take either branch; taking the active one spares
+        // the first step a free fall toward the foundation.
+        types::global_dof_index n_active = 0;
+        for (unsigned int s = 0; s < n_nodes; ++s)
+          {
+            active[s] = z[s] >= 0.;
+            n_active += active[s];
+          }
+        record.n_active = Utilities::MPI::sum(n_active, comm);
+
+        if (record.gradient <= tolerance)
+          {
+            timer.stop();
+            record.time = timer.wall_time();
+            log.push_back(record);
+            break;
+          }
+        AssertThrow(j < parameters.max_newton_steps,
+                    ExcMessage(
+                      "Newton's method (loop 3) did not converge in " +
+                      std::to_string(parameters.max_newton_steps) +
+                      " steps in Uzawa step " + std::to_string(uzawa_step) +
+                      " (relative gradient " + std::to_string(record.gradient) +
+                      ", wanted " + std::to_string(tolerance) +
+                      "). Raise <Solver/Maximum Newton steps>."));
+
+        // Generalised Hessian H = K + sum_{active s} m_s r n n^T.
+        newton_matrix.copy_from(K);
+        for (unsigned int s = 0; s < n_nodes; ++s)
+          if (active[s])
+            {
+              for (unsigned int a = 0; a < dim; ++a)
+                {
+                  local_dofs[a] = contact.nodes[s].dofs[a];
+                  for (unsigned int b = 0; b < dim; ++b)
+                    local_matrix(a, b) = contact.nodes[s].weight * r * n[a] * n[b];
+                }
+              constraints.distribute_local_to_global(local_matrix,
+                                                     local_dofs,
+                                                     newton_matrix);
+            }
+        newton_matrix.compress(VectorOperation::add);
+
+        // Rebuild the AMG only when the active set moved enough, measured
+        // against the size of the active set (the part of H that changes).
+        types::global_dof_index n_changed = 0, n_active_built = 0;
+        if (amg_valid)
+          for (unsigned int s = 0; s < n_nodes; ++s)
+            {
+              n_changed += (active[s] != amg_active_set[s]);
+              n_active_built += amg_active_set[s];
+            }
+        n_changed      = Utilities::MPI::sum(n_changed, comm);
+        n_active_built = Utilities::MPI::sum(n_active_built, comm);
+        if (!amg_valid || parameters.amg_rebuild_fraction == 0. ||
+            n_changed > parameters.amg_rebuild_fraction *
+                          std::max(n_active_built, record.n_active))
+          {
+            linear_solver.initialize(newton_matrix);
+            amg_active_set = active;
+            amg_valid      = true;
+            record.amg_setups = 1;
+          }
+
+        // Inexact Newton: solve only as accurately as the target needs.
+        const double gradient_norm = gradient.l2_norm();
+        const double forcing =
+          std::min(1e-2,
+                   std::max(1e-12, 0.5 * tolerance * reference / gradient_norm));
+        newton_rhs.equ(-1., gradient);
+        direction = 0;
+        record.cg_iterations =
+          linear_solver.solve(newton_matrix, direction, newton_rhs, forcing);
+        constraints.distribute(direction);
+
+        // Line search on M_k along the direction: the smooth part is exactly
+        // quadratic, phi(a) - phi(0) = a q1 + a^2/2 q2 + contact terms.
+        direction_free = direction;
+        constraints.set_zero(direction_free);
+        K.vmult(tmp, direction_free);
+        const double q2 = direction_free * tmp;
+        const double q1 = smooth_gradient * direction;
+        double       slope_local = 0;
+        for (unsigned int s = 0; s < n_nodes; ++s)
+          {
+            dn[s] = contact.normal_displacement(direction, s);
+            slope_local += contact.nodes[s].weight * positive_part(z[s]) * dn[s];
+          }
+        const double slope = q1 + Utilities::MPI::sum(slope_local, comm);
+        const auto   merit_change = [&](const double alpha) {
+          double local = 0;
+          for (unsigned int s = 0; s < n_nodes; ++s)
+            local += contact.nodes[s].weight / (2. * r) *
+                     (std::pow(positive_part(z[s] + alpha * r * dn[s]), 2) -
+                      std::pow(positive_part(z[s]), 2));
+          return alpha * q1 + 0.5 * alpha * alpha * q2 +
+                 Utilities::MPI::sum(local, comm);
+        };
+        double alpha = 1.;
+        if (parameters.line_search)
+          while (merit_change(alpha) > 1e-4 * alpha * slope && alpha > 1e-8)
+            alpha *= 0.5;
+        v.add(alpha, direction);
+        record.step_length = alpha;
+
+        timer.stop();
+        record.time = timer.wall_time();
+        log.push_back(record);
+        step_record.newton_steps += 1;
+        step_record.cg_iterations += record.cg_iterations;
+        step_record.amg_setups += record.amg_setups;
+      }
+  }
+
+  template class UzawaSolver<2>;
+  template class UzawaSolver<3>;
+} // namespace dualcontact
