@@ -56,9 +56,7 @@ namespace dualcontact
   void
   ContactProblem<dim>::print_header() const
   {
-    pcout << "dualcontact: " << dim << "D, "
-          << (parameters.geometry.type == GeometryType::rectangle ? "rectangle" :
-                                                                     "half disc")
+    pcout << "dualcontact: " << dim << "D, " << to_string(parameters.geometry.type)
           << ", E = " << parameters.material.youngs_modulus
           << ", nu = " << parameters.material.poissons_ratio << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
@@ -223,6 +221,10 @@ namespace dualcontact
       uzawa_solver.solve(system, contact_set, v, iteration_log);
     for (std::size_t i = first; i < iteration_log.size(); ++i)
       iteration_log[i].cycle = result.cycle;
+
+    if (parameters.solver.time_reference_solve)
+      result.time_reference = uzawa_solver.time_reference_solve(
+        system, contact_set, v, result.reference_iterations);
 
     result.uzawa_steps       = statistics.uzawa_steps;
     result.newton_steps      = statistics.newton_steps;
@@ -390,7 +392,7 @@ namespace dualcontact
            "newton_steps,linear_iterations,amg_setups,contact_force,"
            "max_pressure,contact_half_width,pressure_error,u_l2,"
            "l2_error,h1_error,l2_rate,h1_rate,time_setup,time_assembly,"
-           "time_solve,time_output\n";
+           "time_solve,time_output,time_reference,memory_mb\n";
     csv << std::setprecision(10);
     for (const CycleResult &r : cycle_results)
       csv << r.cycle << ',' << r.n_cells << ',' << r.n_dofs << ','
@@ -402,7 +404,8 @@ namespace dualcontact
           << r.l2_error << ',' << r.h1_error << ',' << r.l2_rate << ','
           << r.h1_rate << ','
           << r.time_setup << ',' << r.time_assembly << ',' << r.time_solve
-          << ',' << r.time_output << '\n';
+          << ',' << r.time_output << ',' << r.time_reference << ','
+          << r.memory_mb << '\n';
   }
 
   template <int dim>
@@ -497,6 +500,21 @@ namespace dualcontact
           pcout << "   one linear elasticity solve: " << result.linear_iterations
                 << " CG iterations" << seconds(result.time_solve) << '\n';
 
+        if (parameters.solver.time_reference_solve && scene.effects().contact)
+          pcout << "   reference: one linear solve on this mesh "
+                << result.reference_iterations << " CG iterations"
+                << seconds(result.time_reference) << ", contact / linear = "
+                << std::fixed << std::setprecision(2)
+                << (result.time_assembly + result.time_solve) /
+                     (result.time_assembly + result.time_reference)
+                << std::defaultfloat << " (assembly included)\n";
+        {
+          Utilities::System::MemoryStats stats;
+          Utilities::System::get_memory_stats(stats);
+          result.memory_mb =
+            Utilities::MPI::sum(static_cast<double>(stats.VmHWM), mpi_communicator) /
+            1024.;
+        }
         timed("postprocess", [&] { postprocess(result); });
         pcout << std::scientific << std::setprecision(6)
               << "   ||u||_L2 = " << result.u_l2;

@@ -141,6 +141,21 @@ namespace dualcontact
     return "";
   }
 
+  std::string
+  to_string(const GeometryType type)
+  {
+    switch (type)
+      {
+        case GeometryType::rectangle:
+          return "rectangle";
+        case GeometryType::half_disc:
+          return "half disc";
+        case GeometryType::quarter_disc:
+          return "quarter disc";
+      }
+    return "";
+  }
+
   bool
   is_zero_expression(const std::string &expression)
   {
@@ -175,12 +190,14 @@ namespace dualcontact
     prm.declare_entry(
       "Type",
       "rectangle",
-      Patterns::Selection("rectangle|half disc"),
+      Patterns::Selection("rectangle|half disc|quarter disc"),
       "Shape of the body. 'rectangle': an axis-parallel box with boundary ids "
       "0 (x = x_min), 1 (x = x_max), 2 (y = y_min), 3 (y = y_max) (and 4, 5 "
       "for z in 3D). 'half disc': the lower half of a disc (ball in 3D) of "
       "the given radius and centre, with boundary ids 0 (the curved part) "
-      "and 1 (the flat top); refinement follows the circle.");
+      "and 1 (the flat top); refinement follows the circle. 'quarter disc' "
+      "(2D): the lower right quarter (x >= x_c, y <= y_c) with ids 0 (curved), "
+      "1 (flat top) and 2 (the symmetry line x = x_c).");
     prm.declare_entry("Lower left corner",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
@@ -234,8 +251,10 @@ namespace dualcontact
   {
     prm.enter_subsection("Geometry");
     dimension = prm.get_integer("Dimension");
-    type      = prm.get("Type") == "rectangle" ? GeometryType::rectangle :
-                                                 GeometryType::half_disc;
+    const std::string shape = prm.get("Type");
+    type = shape == "rectangle" ? GeometryType::rectangle :
+           shape == "half disc" ? GeometryType::half_disc :
+                                  GeometryType::quarter_disc;
     lower_left  = parse_doubles(prm.get("Lower left corner"));
     upper_right = parse_doubles(prm.get("Upper right corner"));
     subdivisions.clear();
@@ -547,6 +566,14 @@ namespace dualcontact
       "number of contact nodes that changed status since it was built "
       "exceeds this fraction of the active set [-]; 0 rebuilds it at every "
       "Newton step.");
+    prm.declare_entry(
+      "Time a reference linear solve",
+      "false",
+      Patterns::Bool(),
+      "After each contact solve, also time one linear elasticity solve on "
+      "the same mesh (AMG set-up and CG to the linear tolerance on the final "
+      "Newton matrix, i.e. with the contact nodes held) and report the ratio "
+      "of the times (assembly included in both). For benchmarks.");
     prm.leave_subsection();
   }
 
@@ -567,6 +594,7 @@ namespace dualcontact
     max_newton_steps          = prm.get_integer("Maximum Newton steps");
     line_search               = prm.get_bool("Line search");
     amg_rebuild_fraction      = prm.get_double("AMG rebuild fraction");
+    time_reference_solve      = prm.get_bool("Time a reference linear solve");
     prm.leave_subsection();
     if (!(augmentation > 0.))
       throw InputError("The entry <Solver/Augmentation parameter> must be "
@@ -791,17 +819,21 @@ namespace dualcontact
     else
       need_dim(geometry.center, "Geometry/Center");
 
+    if (geometry.type == GeometryType::quarter_disc && dim != 2)
+      throw InputError("The entry <Geometry/Type> 'quarter disc' exists in 2D "
+                       "only.",
+                       exit_inconsistent);
     const unsigned int n_ids =
-      geometry.type == GeometryType::rectangle ? 2 * dim : 2;
+      geometry.type == GeometryType::rectangle    ? 2 * dim :
+      geometry.type == GeometryType::quarter_disc ? 3 :
+                                                    2;
+    const std::string shape = to_string(geometry.type);
     for (const auto &[id, condition] : boundary.conditions)
       if (id >= n_ids)
         throw InputError("The entry <Boundary conditions/Conditions> names "
                          "boundary id " +
                            std::to_string(id) + ", which the geometry '" +
-                           (geometry.type == GeometryType::rectangle ?
-                              "rectangle" :
-                              "half disc") +
-                           "' does not have (its ids are 0 to " +
+                           shape + "' does not have (its ids are 0 to " +
                            std::to_string(n_ids - 1) + ").",
                          exit_inconsistent);
 

@@ -202,7 +202,7 @@ namespace dualcontact
   Scene<dim>::characteristic_length() const
   {
     const GeometryParameters &g = parameters.geometry;
-    if (g.type == GeometryType::half_disc)
+    if (g.type != GeometryType::rectangle)
       return g.radius;
     double length = 0;
     for (unsigned int d = 0; d < dim; ++d)
@@ -215,7 +215,7 @@ namespace dualcontact
   Scene<dim>::center() const
   {
     const GeometryParameters &g = parameters.geometry;
-    if (g.type == GeometryType::half_disc)
+    if (g.type != GeometryType::rectangle)
       return to_point<dim>(g.center);
     return 0.5 * (to_point<dim>(g.lower_left) + to_point<dim>(g.upper_right));
   }
@@ -238,27 +238,61 @@ namespace dualcontact
       }
     else
       {
-        // deal.II's half ball is the half x >= 0 of a ball around the origin.
-        // Rotate it so that the cut plane is the top (normal +e_{dim-1}) and
-        // the body lies below, then move it to the given centre.
-        Triangulation<dim> serial;
-        GridGenerator::half_hyper_ball(serial, Point<dim>(), g.radius);
+        // The body lies below its flat top (normal +e_{dim-1}) through the
+        // centre. In 2D both discs are made of deal.II's quarter ball (the
+        // quadrant x, y >= 0) turned by -90 degrees (lower right quarter)
+        // and, for the half disc, by 180 degrees (lower left quarter): the
+        // quarter ball is symmetric about its diagonal, so the half disc's
+        // mesh is symmetric about the line x = x_c, which is a mesh line, and
+        // its right half is exactly the quarter disc's mesh. In 3D the half
+        // ball x >= 0 is turned so that its cut plane is the top.
         const Point<dim> center = to_point<dim>(g.center);
-        GridTools::transform(
-          [&center](const Point<dim> &p) {
-            Point<dim> q;
-            if (dim == 2)
-              q = Point<dim>(p[1], -p[0]);
-            else // a proper rotation: (x,y,z) -> (-y, z, -x)
-              {
-                q[0] = -p[1];
-                q[1] = p[dim - 1];
-                q[dim - 1] = -p[0];
-              }
-            return q + center;
-          },
-          serial);
+        const auto       turn   = [&](const auto &rotation) {
+          Triangulation<dim> part;
+          if (dim == 2)
+            GridGenerator::quarter_hyper_ball(part, Point<dim>(), g.radius);
+          else
+            GridGenerator::half_hyper_ball(part, Point<dim>(), g.radius);
+          GridTools::transform(rotation, part);
+          return part;
+        };
+        Triangulation<dim> serial;
+        const auto lower_right = turn([&](const Point<dim> &p) {
+          Point<dim> q;
+          if (dim == 2)
+            q = Point<dim>(p[1], -p[0]);
+          else // a proper rotation: (x,y,z) -> (-y, z, -x)
+            {
+              q[0]       = -p[1];
+              q[1]       = p[dim - 1];
+              q[dim - 1] = -p[0];
+            }
+          return q + center;
+        });
+        if (dim == 2 && g.type == GeometryType::half_disc)
+          GridGenerator::merge_triangulations(
+            lower_right,
+            turn([&](const Point<dim> &p) { return center - p; }),
+            serial);
+        else
+          serial.copy_triangulation(lower_right);
         serial.reset_all_manifolds();
+
+        // Boundary ids: 1 on the flat top, 2 on the symmetry line of the
+        // quarter disc, 0 on the curved part.
+        const double tolerance = 1e-8 * g.radius;
+        for (const auto &face : serial.active_face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<dim> x = face->center();
+              if (std::abs(x[dim - 1] - center[dim - 1]) < tolerance)
+                face->set_boundary_id(1);
+              else if (g.type == GeometryType::quarter_disc &&
+                       std::abs(x[0] - center[0]) < tolerance)
+                face->set_boundary_id(2);
+              else
+                face->set_boundary_id(0);
+            }
         triangulation.copy_triangulation(serial);
 
         // The curved boundary follows the circle; the interior blends

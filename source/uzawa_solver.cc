@@ -56,6 +56,57 @@ namespace dualcontact
   }
 
   template <int dim>
+  void
+  UzawaSolver<dim>::assemble_newton_matrix(const ContactSystem     &system,
+                                           const ContactSet<dim>   &contact,
+                                           const std::vector<bool> &active)
+  {
+    const Tensor<1, dim>                &n = contact.normal;
+    FullMatrix<double>                   local_matrix(dim, dim);
+    std::vector<types::global_dof_index> local_dofs(dim);
+    newton_matrix.copy_from(system.stiffness);
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      if (active[s])
+        {
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              local_dofs[a] = contact.nodes[s].dofs[a];
+              for (unsigned int b = 0; b < dim; ++b)
+                local_matrix(a, b) =
+                  contact.nodes[s].weight * system.r * n[a] * n[b];
+            }
+          system.homogeneous_constraints.distribute_local_to_global(
+            local_matrix, local_dofs, newton_matrix);
+        }
+    newton_matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  double
+  UzawaSolver<dim>::time_reference_solve(
+    const ContactSystem                 &system,
+    const ContactSet<dim>               &contact,
+    const TrilinosWrappers::MPI::Vector &v,
+    unsigned int                        &iterations)
+  {
+    std::vector<double> z;
+    augmented_pressures(contact, v, system.r, z);
+    std::vector<bool> active(z.size());
+    for (unsigned int s = 0; s < z.size(); ++s)
+      active[s] = z[s] >= 0.;
+    assemble_newton_matrix(system, contact, active);
+
+    Timer timer(v.get_mpi_communicator(), true);
+    linear_solver.initialize(newton_matrix);
+    TrilinosWrappers::MPI::Vector x(system.load);
+    x          = 0;
+    iterations = linear_solver.solve(newton_matrix, x, system.load);
+    timer.stop();
+    amg_valid = false; // the preconditioner now belongs to another matrix
+    return timer.wall_time();
+  }
+
+  template <int dim>
   ContactStatistics
   UzawaSolver<dim>::solve(const ContactSystem           &system,
                           ContactSet<dim>               &contact,
@@ -187,7 +238,6 @@ namespace dualcontact
     std::vector<double> z, dn(n_nodes);
     std::vector<bool>   active(n_nodes);
     Vector<double>      local_vector(dim);
-    FullMatrix<double>  local_matrix(dim, dim);
     std::vector<types::global_dof_index> local_dofs(dim);
     const Tensor<1, dim> &n = contact.normal;
 
@@ -248,21 +298,7 @@ namespace dualcontact
                       "). Raise <Solver/Maximum Newton steps>."));
 
         // Generalised Hessian H = K + sum_{active s} m_s r n n^T.
-        newton_matrix.copy_from(K);
-        for (unsigned int s = 0; s < n_nodes; ++s)
-          if (active[s])
-            {
-              for (unsigned int a = 0; a < dim; ++a)
-                {
-                  local_dofs[a] = contact.nodes[s].dofs[a];
-                  for (unsigned int b = 0; b < dim; ++b)
-                    local_matrix(a, b) = contact.nodes[s].weight * r * n[a] * n[b];
-                }
-              constraints.distribute_local_to_global(local_matrix,
-                                                     local_dofs,
-                                                     newton_matrix);
-            }
-        newton_matrix.compress(VectorOperation::add);
+        assemble_newton_matrix(system, contact, active);
 
         // Rebuild the AMG only when the active set moved enough, measured
         // against the size of the active set (the part of H that changes).

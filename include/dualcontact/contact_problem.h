@@ -62,6 +62,10 @@ namespace dualcontact
     double                  time_assembly     = 0.;
     double                  time_solve        = 0.;
     double                  time_output       = 0.;
+    // benchmarks (Solver/Time a reference linear solve)
+    double                  time_reference    = 0.; // AMG + CG of one solve
+    unsigned int            reference_iterations = 0;
+    double                  memory_mb         = 0.; // peak RSS, all ranks
   };
 
   template <int dim>

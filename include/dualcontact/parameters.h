@@ -19,7 +19,8 @@ namespace dualcontact
   enum class GeometryType
   {
     rectangle,
-    half_disc
+    half_disc,
+    quarter_disc
   };
 
   /** The condition on one part of the boundary (DESIGN.md §1). */
@@ -46,6 +47,8 @@ namespace dualcontact
 
   std::string
   to_string(const BoundaryCondition condition);
+  std::string
+  to_string(const GeometryType type);
 
   /** Geometry and initial mesh. */
   struct GeometryParameters
@@ -160,6 +163,7 @@ namespace dualcontact
     unsigned int max_newton_steps          = 50;
     bool         line_search               = true;
     double       amg_rebuild_fraction      = 0.05;
+    bool         time_reference_solve      = false;
 
     static void
     declare_parameters(ParameterHandler &prm);

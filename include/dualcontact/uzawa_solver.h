@@ -88,7 +88,25 @@ namespace dualcontact
           TrilinosWrappers::MPI::Vector &v,
           std::vector<IterationRecord>  &log);
 
+    /**
+     * For benchmarks: the wall time of one linear solve on the current
+     * mesh, i.e. AMG set-up plus CG (linear tolerance) on the Newton matrix
+     * at the current active set, with right-hand side b. Returns the time
+     * [s]; `iterations` gets the CG count.
+     */
+    double
+    time_reference_solve(const ContactSystem                 &system,
+                         const ContactSet<dim>               &contact,
+                         const TrilinosWrappers::MPI::Vector &v,
+                         unsigned int                        &iterations);
+
   private:
+    /** H = K + sum_{active s} m_s r n n^T, condensed. */
+    void
+    assemble_newton_matrix(const ContactSystem     &system,
+                           const ContactSet<dim>   &contact,
+                           const std::vector<bool> &active);
+
     /**
      * Loop 3: minimise M_k(v) = 1/2 a(v,v) - L(v) + (chi/2)|v - v^k|_M^2
      * + sum_s m_s/(2r) (((l1_s + r(v_n - g0))^+)^2 - l1_s^2) over v by
