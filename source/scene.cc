@@ -16,6 +16,7 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/scene.h>
 
+#include <iostream>
 #include <sstream>
 
 namespace dualcontact
@@ -54,6 +55,12 @@ namespace dualcontact
                                                             0.,
                                                             1e-4 * length);
       function->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
+      // deal.II prints muparser's diagnostics on std::cerr before it
+      // throws; the user gets our one-line message instead.
+      std::ostringstream       muparser_diagnostics;
+      std::streambuf *const    cerr_buffer =
+        std::cerr.rdbuf(muparser_diagnostics.rdbuf());
+      const auto restore_cerr = [cerr_buffer]() { std::cerr.rdbuf(cerr_buffer); };
       try
         {
           function->initialize(variables, expression, constants);
@@ -63,11 +70,13 @@ namespace dualcontact
         }
       catch (const std::exception &)
         {
+          restore_cerr();
           throw InputError("The entry <" + entry +
                              "> is not a valid expression in " + variables +
                              ": '" + expression + "'.",
                            exit_invalid_value);
         }
+      restore_cerr();
       return function;
     }
 
