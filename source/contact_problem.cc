@@ -230,6 +230,8 @@ namespace dualcontact
     result.newton_steps      = statistics.newton_steps;
     result.linear_iterations = statistics.cg_iterations;
     result.amg_setups        = statistics.amg_setups;
+    result.uzawa_rate        = statistics.rate;
+    result.l1_error_estimate = statistics.estimated_l1_error;
     result.n_active          = statistics.n_active;
 
     // Figures of the contact zone: total force, peak pressure, half-width
@@ -494,6 +496,11 @@ namespace dualcontact
                 << result.contact_half_width;
         if (scene.exact_pressure() != nullptr)
           pcout << ", pressure error (rel. L2) " << result.pressure_error;
+        if (scene.effects().contact)
+          pcout << std::scientific << std::setprecision(2)
+                << "\n   Uzawa contraction rate " << result.uzawa_rate
+                << ": the last change of l1 understates its error, estimated "
+                << result.l1_error_estimate;
         if (scene.effects().contact)
           pcout << std::defaultfloat << '\n';
         else

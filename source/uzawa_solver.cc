@@ -123,6 +123,7 @@ namespace dualcontact
 
     TrilinosWrappers::MPI::Vector v_previous(v);
     std::vector<double>           z;
+    double                        previous_change = 0.;
 
     for (unsigned int k = 1; k <= parameters.max_uzawa_steps; ++k)
       {
@@ -194,6 +195,12 @@ namespace dualcontact
           line << std::fixed << std::setprecision(3) << "  (" << record.time
                << " s)";
         pcout << line.str() << std::endl;
+
+        if (k > 1 && previous_change > 0.)
+          statistics.rate = std::min(record.change_l1 / previous_change, 0.999);
+        statistics.estimated_l1_error =
+          record.change_l1 * statistics.rate / (1. - statistics.rate);
+        previous_change = record.change_l1;
 
         if (record.change_l1 <= tolerance && record.change_v <= tolerance &&
             record.violation <= tolerance)

@@ -50,6 +50,8 @@ namespace dualcontact
     unsigned int            uzawa_steps       = 0;
     unsigned int            newton_steps      = 0;
     unsigned int            amg_setups        = 0;
+    double                  uzawa_rate        = 0.; // observed contraction
+    double                  l1_error_estimate = 0.; // relative, from the rate
     double                  contact_force     = 0.; // sum_s m_s l1_s
     double                  max_pressure      = 0.; // max_s l1_s
     double                  contact_half_width = 0.; // 2D: half the extent

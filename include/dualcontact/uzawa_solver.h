@@ -63,6 +63,11 @@ namespace dualcontact
     unsigned int cg_iterations = 0;
     unsigned int amg_setups    = 0;
     types::global_dof_index n_active = 0;
+    // The last relative change of l1 understates its error: with the
+    // observed contraction rate rho = d_k / d_{k-1} the remaining error is
+    // about d_k rho / (1 - rho) (DESIGN.md §3).
+    double       rate               = 0.;
+    double       estimated_l1_error = 0.;
   };
 
   template <int dim>
