@@ -31,13 +31,12 @@ namespace dualcontact
                                       std::ostream     &out)
     : mpi_communicator(mpi_communicator)
     , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    , computing_timer(mpi_communicator,
-                      pcout,
-                      parameters.output.print_timing ? TimerOutput::summary :
-                                                       TimerOutput::never,
-                      TimerOutput::wall_times)
     , parameters(parameters)
     , scene(parameters)
+    , computing_timer(mpi_communicator,
+                      pcout,
+                      TimerOutput::never,
+                      TimerOutput::wall_times)
     , triangulation(mpi_communicator,
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::smoothing_on_refinement |
@@ -50,7 +49,13 @@ namespace dualcontact
                    elastic_solver,
                    pcout,
                    parameters.output.print_timing)
-  {}
+  {
+    if (parameters.friction.law != FrictionLaw::none)
+      throw InputError("The entry <Friction/Law> asks for friction, which this "
+                       "version of dualcontact does not implement yet; use "
+                       "'none'.",
+                       exit_invalid_value);
+  }
 
   template <int dim>
   void
@@ -550,6 +555,8 @@ namespace dualcontact
                 << r.h1_rate << std::defaultfloat << '\n';
       }
     pcout << "Output written to " << parameters.output.directory << "/\n";
+    if (parameters.output.print_timing)
+      computing_timer.print_summary();
   }
 
   template class ContactProblem<2>;

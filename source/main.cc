@@ -11,11 +11,38 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameters.h>
 
+#include <exception>
 #include <iostream>
 #include <string>
 
 namespace
 {
+  /**
+   * Run one scene. Bad input found inside run() is caught while the problem
+   * still exists and rethrown after it is gone: the problem's objects then
+   * finish normally (every rank throws the same InputError together) instead
+   * of during stack unwinding, where deal.II would warn about MPI.
+   */
+  template <int dim>
+  void
+  run_scene(const dualcontact::Parameters &parameters)
+  {
+    std::exception_ptr input_error;
+    {
+      dualcontact::ContactProblem<dim> problem(parameters);
+      try
+        {
+          problem.run();
+        }
+      catch (const dualcontact::InputError &)
+        {
+          input_error = std::current_exception();
+        }
+    }
+    if (input_error)
+      std::rethrow_exception(input_error);
+  }
+
   const char *const usage =
     "Usage: dualcontact [--help | --print-parameters] [scene.prm]\n"
     "\n"
@@ -66,15 +93,9 @@ main(int argc, char *argv[])
       Parameters parameters;
       parameters.read_file(args[0]);
       if (parameters.geometry.dimension == 2)
-        {
-          ContactProblem<2> problem(parameters);
-          problem.run();
-        }
+        run_scene<2>(parameters);
       else
-        {
-          ContactProblem<3> problem(parameters);
-          problem.run();
-        }
+        run_scene<3>(parameters);
     }
   catch (const InputError &error)
     {

@@ -755,14 +755,11 @@ namespace dualcontact
     if (!in)
       throw InputError("Cannot open the parameter file <" + filename + ">.",
                        exit_cannot_read_file);
-    std::stringstream text;
-    text << in.rdbuf();
-
     ParameterHandler prm;
     declare_parameters(prm);
     try
       {
-        prm.parse_input_from_string(text.str(), filename);
+        prm.parse_input(in, filename);
       }
     catch (const ExceptionBase &exc)
       {
@@ -778,7 +775,7 @@ namespace dualcontact
     declare_parameters(prm);
     try
       {
-        prm.parse_input_from_string(text, "input string");
+        prm.parse_input_from_string(text);
       }
     catch (const ExceptionBase &exc)
       {

@@ -85,7 +85,7 @@ namespace dualcontact
   {
     const auto &triangulation = dof_handler.get_triangulation();
     const QGauss<dim> quadrature(dof_handler.get_fe().degree + 2);
-    Vector<float>     cellwise(triangulation.n_active_cells());
+    Vector<double>    cellwise(triangulation.n_active_cells());
     const Functions::ZeroFunction<dim> zero(dim);
 
     const auto norm = [&](const Function<dim>          &reference,

@@ -148,14 +148,16 @@ namespace dualcontact
     void
     print_header() const;
 
-    // MPI, screen, timing
+    // MPI and screen
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
-    TimerOutput        computing_timer;
 
-    // the scene
+    // the scene (built first: bad input throws before anything else exists)
     const Parameters &parameters;
     const Scene<dim>  scene;
+
+    // timing; the summary is printed at the end of a successful run()
+    TimerOutput computing_timer;
 
     // mesh and finite element
     parallel::distributed::Triangulation<dim> triangulation;

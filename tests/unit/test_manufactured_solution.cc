@@ -1,0 +1,134 @@
+// Convergence of the elastic solver against the manufactured solution of
+// tests/prm/mms.prm (see its leading comment), through ContactProblem<2>:
+// Q1 converges with rate 2 in L2 and 1 in H1. And the result does not depend
+// on the number of MPI ranks.
+#include <deal.II/base/mpi.h>
+
+#include <dualcontact/contact_problem.h>
+#include <dualcontact/parameters.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "test_tools.h"
+
+using namespace dualcontact;
+
+namespace
+{
+  /** tests/prm/mms.prm, writing only cycles.csv into `directory`. */
+  Parameters
+  mms_parameters(const std::string &directory)
+  {
+    // later 'set' lines override earlier ones: append the output entries
+    const std::string text =
+      dualcontact_test::read_text(dualcontact_test::test_file("prm/mms.prm")) +
+      "\nsubsection Output\n"
+      "  set Directory = " +
+      directory +
+      "\n"
+      "  set Write vtu = false\n"
+      "  set Print timing = false\n"
+      "end\n";
+    Parameters parameters;
+    parameters.read_string(text);
+    return parameters;
+  }
+
+  /** Run the MMS scene on `comm`; the screen output goes to `screen`. */
+  std::vector<CycleResult>
+  run_mms(const MPI_Comm comm, const std::string &name, std::ostream &screen)
+  {
+    const std::string directory =
+      dualcontact_test::temporary_directory(name, comm);
+    const Parameters  parameters = mms_parameters(directory);
+    ContactProblem<2> problem(parameters, comm, screen);
+    problem.run();
+    dualcontact_test::remove_directory(directory, comm);
+    return problem.results();
+  }
+
+  double
+  relative_difference(const double a, const double b)
+  {
+    return std::abs(a - b) / std::max(std::abs(a), std::abs(b));
+  }
+} // namespace
+
+TEST_CASE("Manufactured solution: Q1 converges with rate 2 in L2 and 1 in H1",
+          "[elasticity][convergence][mpi]")
+{
+  std::ostringstream             screen;
+  const std::vector<CycleResult> results =
+    run_mms(MPI_COMM_WORLD, "mms_rates", screen);
+
+  REQUIRE(results.size() == 4);
+  for (unsigned int k = 0; k < results.size(); ++k)
+    {
+      const CycleResult &r = results[k];
+      INFO("cycle " << k << ": " << r.n_dofs << " DoFs, L2 error " << r.l2_error
+                    << " (rate " << r.l2_rate << "), H1 error " << r.h1_error
+                    << " (rate " << r.h1_rate << ")");
+      CHECK(r.cycle == k);
+      CHECK(r.l2_error > 0);
+      CHECK(r.h1_error > 0);
+      // ||u_exact||_L2 is about 0.75 for this solution
+      CHECK(r.u_l2 == Approx(0.75).epsilon(0.02));
+      if (k >= 1)
+        {
+          CHECK(r.l2_rate == Approx(2.).margin(0.1));
+          CHECK(r.h1_rate == Approx(1.).margin(0.1));
+          CHECK(r.n_cells == 4 * results[k - 1].n_cells);
+        }
+    }
+  // the screen output (rank 0 only) ends with the convergence table
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool has_table =
+    screen.str().find("Convergence (rates for h halved per cycle)") !=
+    std::string::npos;
+  CHECK(Utilities::MPI::min(static_cast<unsigned int>(has_table || !root),
+                            MPI_COMM_WORLD) == 1);
+}
+
+TEST_CASE("Manufactured solution: every rank alone and all ranks together "
+          "give the same errors and ||u||_L2",
+          "[elasticity][mpi]")
+{
+  // on each rank separately: the serial reference
+  std::ostringstream             screen_self;
+  const std::vector<CycleResult> alone =
+    run_mms(MPI_COMM_SELF,
+            "mms_self_rank" +
+              std::to_string(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)),
+            screen_self);
+  // distributed over all ranks
+  std::ostringstream             screen_world;
+  const std::vector<CycleResult> together =
+    run_mms(MPI_COMM_WORLD, "mms_world", screen_world);
+
+  REQUIRE(alone.size() == together.size());
+  for (unsigned int k = 0; k < alone.size(); ++k)
+    {
+      INFO("cycle " << k);
+      CHECK(alone[k].n_dofs == together[k].n_dofs);
+      // the largest difference over the ranks, so all ranks check the same
+      const double l2 = Utilities::MPI::max(
+        relative_difference(alone[k].l2_error, together[k].l2_error),
+        MPI_COMM_WORLD);
+      const double h1 = Utilities::MPI::max(
+        relative_difference(alone[k].h1_error, together[k].h1_error),
+        MPI_COMM_WORLD);
+      const double u = Utilities::MPI::max(
+        relative_difference(alone[k].u_l2, together[k].u_l2), MPI_COMM_WORLD);
+      INFO("relative differences: L2 error " << l2 << ", H1 error " << h1
+                                             << ", ||u||_L2 " << u);
+      // The discrete solutions agree to round-off and the solver tolerance.
+      const double tolerance = 1e-8;
+      CHECK(l2 < tolerance);
+      CHECK(h1 < tolerance);
+      CHECK(u < tolerance);
+    }
+}
