@@ -513,7 +513,7 @@ namespace dualcontact
       "means fewer Uzawa steps and harder Newton problems.");
     prm.declare_entry(
       "Proximal parameter",
-      "1e-2",
+      "1e-3",
       Patterns::Double(0.),
       "chi_rel [-], > 0: the proximal weight is chi = chi_rel E / L^2 "
       "[stress/length^2], with L the body's size (longest side, or radius). "
@@ -544,10 +544,20 @@ namespace dualcontact
       "shrinks geometrically from step to step (summable errors, as the "
       "convergence theorem needs) down to the final tolerance.");
     prm.declare_entry("Inner tolerance reduction",
-                      "0.1",
+                      "0.5",
                       Patterns::Double(0., 1.),
-                      "Factor by which loop 3's tolerance shrinks per Uzawa "
-                      "step [-], in (0, 1).");
+                      "Loop 3's tolerance stays below initial tolerance times "
+                      "this factor to the power (Uzawa step - 1) [-], in "
+                      "(0, 1): a geometric envelope that keeps the errors "
+                      "summable.");
+    prm.declare_entry("Inner tolerance factor",
+                      "1e-2",
+                      Patterns::Double(0., 1.),
+                      "Loop 3 stops once its gradient fell by this factor "
+                      "within the Uzawa step (and is below the envelope), or "
+                      "is below the final tolerance [-]: no Uzawa step is "
+                      "solved much more accurately than the iteration can "
+                      "use.");
     prm.declare_entry("Maximum Newton steps",
                       "50",
                       Patterns::Integer(1),
@@ -556,16 +566,18 @@ namespace dualcontact
     prm.declare_entry("Line search",
                       "true",
                       Patterns::Bool(),
-                      "Backtracking (Armijo) line search on the Uzawa step's "
-                      "functional; makes Newton globally convergent.");
+                      "Exact line search on the Uzawa step's functional (a convex "
+                      "piecewise quadratic along each Newton direction); makes "
+                      "Newton globally convergent. false: full steps.");
     prm.declare_entry(
       "AMG rebuild fraction",
       "0.05",
       Patterns::Double(0., 1.),
       "Rebuild the AMG preconditioner of the Newton matrix only when the "
       "number of contact nodes that changed status since it was built "
-      "exceeds this fraction of the active set [-]; 0 rebuilds it at every "
-      "Newton step.");
+      "exceeds this fraction of the active set [-], or when the last CG "
+      "solve needed more than 1.5 times (plus 10) the iterations of the "
+      "first one after the set-up; 0 rebuilds it at every Newton step.");
     prm.declare_entry(
       "Time a reference linear solve",
       "false",
@@ -591,6 +603,7 @@ namespace dualcontact
     newton_tolerance_factor   = prm.get_double("Newton tolerance factor");
     initial_inner_tolerance   = prm.get_double("Initial inner tolerance");
     inner_tolerance_reduction = prm.get_double("Inner tolerance reduction");
+    inner_tolerance_factor    = prm.get_double("Inner tolerance factor");
     max_newton_steps          = prm.get_integer("Maximum Newton steps");
     line_search               = prm.get_bool("Line search");
     amg_rebuild_fraction      = prm.get_double("AMG rebuild fraction");

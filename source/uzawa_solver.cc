@@ -1,3 +1,4 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
@@ -130,7 +131,10 @@ namespace dualcontact
         Timer timer(comm, true);
         v_previous = v;
 
-        // Loop 3 to a tolerance that shrinks geometrically (summable errors).
+        // Loop 3's tolerance shrinks geometrically (an envelope that keeps
+        // the errors summable, as the convergence theorem needs); minimise()
+        // also stops once the gradient fell by the inner tolerance factor,
+        // never before the final tolerance.
         const double inner_tolerance =
           std::max(final_inner_tolerance,
                    parameters.initial_inner_tolerance *
@@ -138,7 +142,15 @@ namespace dualcontact
         IterationRecord record;
         record.loop       = "uzawa";
         record.uzawa_step = k;
-        minimise(system, contact, v_previous, v, inner_tolerance, k, record, log);
+        minimise(system,
+                 contact,
+                 v_previous,
+                 v,
+                 inner_tolerance,
+                 final_inner_tolerance,
+                 k,
+                 record,
+                 log);
 
         // Multiplier update l1 <- (l1 + r (v_n - g0))^+ and the measures of
         // convergence, all reduced over the ranks.
@@ -222,7 +234,8 @@ namespace dualcontact
                              const ContactSet<dim>               &contact,
                              const TrilinosWrappers::MPI::Vector &v_previous,
                              TrilinosWrappers::MPI::Vector       &v,
-                             const double                         tolerance,
+                             const double                         envelope,
+                             const double                         final_tolerance,
                              const unsigned int                   uzawa_step,
                              IterationRecord                     &step_record,
                              std::vector<IterationRecord>        &log)
@@ -248,6 +261,7 @@ namespace dualcontact
     std::vector<types::global_dof_index> local_dofs(dim);
     const Tensor<1, dim> &n = contact.normal;
 
+    double target = 0.; // absolute gradient tolerance of this Uzawa step
     for (unsigned int j = 0;; ++j)
       {
         Timer timer(comm, true);
@@ -288,7 +302,17 @@ namespace dualcontact
           }
         record.n_active = Utilities::MPI::sum(n_active, comm);
 
-        if (record.gradient <= tolerance)
+        // Stop when the gradient is below the envelope and has fallen by the
+        // inner tolerance factor within this Uzawa step (each step is then
+        // solved as accurately as the Uzawa iteration can use, and no more),
+        // or when it is below the final tolerance.
+        const double gradient_norm = gradient.l2_norm();
+        if (j == 0)
+          target = std::max(final_tolerance * reference,
+                            std::min(envelope * reference,
+                                     parameters.inner_tolerance_factor *
+                                       gradient_norm));
+        if (gradient_norm <= target)
           {
             timer.stop();
             record.time = timer.wall_time();
@@ -301,7 +325,7 @@ namespace dualcontact
                       std::to_string(parameters.max_newton_steps) +
                       " steps in Uzawa step " + std::to_string(uzawa_step) +
                       " (relative gradient " + std::to_string(record.gradient) +
-                      ", wanted " + std::to_string(tolerance) +
+                      ", wanted " + std::to_string(target / reference) +
                       "). Raise <Solver/Maximum Newton steps>."));
 
         // Generalised Hessian H = K + sum_{active s} m_s r n n^T.
@@ -318,9 +342,14 @@ namespace dualcontact
             }
         n_changed      = Utilities::MPI::sum(n_changed, comm);
         n_active_built = Utilities::MPI::sum(n_active_built, comm);
-        if (!amg_valid || parameters.amg_rebuild_fraction == 0. ||
-            n_changed > parameters.amg_rebuild_fraction *
-                          std::max(n_active_built, record.n_active))
+        // ... or when the last CG solve needed clearly more iterations than
+        // the first one after the set-up (a set-up costs about 20 of them).
+        const bool rebuild =
+          !amg_valid || parameters.amg_rebuild_fraction == 0. ||
+          n_changed > parameters.amg_rebuild_fraction *
+                        std::max(n_active_built, record.n_active) ||
+          last_cg_iterations > 1.5 * cg_iterations_after_setup + 10;
+        if (rebuild)
           {
             linear_solver.initialize(newton_matrix);
             amg_active_set = active;
@@ -329,31 +358,51 @@ namespace dualcontact
           }
 
         // Inexact Newton: solve only as accurately as the target needs.
-        const double gradient_norm = gradient.l2_norm();
         const double forcing =
-          std::min(1e-2,
-                   std::max(1e-12, 0.5 * tolerance * reference / gradient_norm));
+          std::min(0.1, std::max(1e-12, 0.5 * target / gradient_norm));
         newton_rhs.equ(-1., gradient);
         direction = 0;
         record.cg_iterations =
           linear_solver.solve(newton_matrix, direction, newton_rhs, forcing);
+        last_cg_iterations = record.cg_iterations;
+        if (record.amg_setups > 0)
+          cg_iterations_after_setup = record.cg_iterations;
         constraints.distribute(direction);
 
-        // Line search on M_k along the direction: the smooth part is exactly
-        // quadratic, phi(a) - phi(0) = a q1 + a^2/2 q2 + contact terms.
+        // Line search on M_k along the direction. The smooth part is
+        // exactly quadratic and each contact term a 1D piecewise quadratic,
+        // so phi(a) = M_k(v + a d) is a convex piecewise quadratic with
+        //   phi'(a) = q1 + a q2 + sum_s m_s (z_s + a r dn_s)^+ dn_s,
+        // and its minimiser is found exactly (DESIGN.md §2: the line search
+        // makes Newton globally convergent; an exact one also lets a step
+        // that meets many new contact nodes go as far as it should).
         direction_free = direction;
         constraints.set_zero(direction_free);
         K.vmult(tmp, direction_free);
         const double q2 = direction_free * tmp;
         const double q1 = smooth_gradient * direction;
-        double       slope_local = 0;
         for (unsigned int s = 0; s < n_nodes; ++s)
-          {
-            dn[s] = contact.normal_displacement(direction, s);
-            slope_local += contact.nodes[s].weight * positive_part(z[s]) * dn[s];
-          }
-        const double slope = q1 + Utilities::MPI::sum(slope_local, comm);
-        const auto   merit_change = [&](const double alpha) {
+          dn[s] = contact.normal_displacement(direction, s);
+        // phi'(a) and phi''(a) (the latter from the right), summed over ranks
+        const auto derivatives = [&](const double alpha) {
+          double local[2] = {0., 0.};
+          for (unsigned int s = 0; s < n_nodes; ++s)
+            {
+              const double zs = z[s] + alpha * r * dn[s];
+              if (zs > 0. || (zs == 0. && dn[s] > 0.))
+                {
+                  local[0] += contact.nodes[s].weight * zs * dn[s];
+                  local[1] += contact.nodes[s].weight * r * dn[s] * dn[s];
+                }
+            }
+          double global[2];
+          Utilities::MPI::sum(ArrayView<const double>(local, 2),
+                              comm,
+                              ArrayView<double>(global, 2));
+          return std::make_pair(q1 + alpha * q2 + global[0], q2 + global[1]);
+        };
+        // phi(a) - phi(0), for the sufficient-decrease test of the full step
+        const auto merit_change = [&](const double alpha) {
           double local = 0;
           for (unsigned int s = 0; s < n_nodes; ++s)
             local += contact.nodes[s].weight / (2. * r) *
@@ -363,9 +412,34 @@ namespace dualcontact
                  Utilities::MPI::sum(local, comm);
         };
         double alpha = 1.;
-        if (parameters.line_search)
-          while (merit_change(alpha) > 1e-4 * alpha * slope && alpha > 1e-8)
-            alpha *= 0.5;
+        // The full step is taken when it decreases M_k enough (Armijo);
+        // otherwise the exact minimiser along the direction.
+        if (parameters.line_search &&
+            merit_change(1.) > 1e-4 * derivatives(0.).first)
+          {
+            // phi' is increasing, negative at 0: bracket its root, then
+            // Newton steps on phi' kept inside the bracket (bisection when
+            // they leave it); phi' is piecewise linear, so this ends in a few
+            // steps.
+            double lower = 0., upper = 1.;
+            while (derivatives(upper).first < 0. && upper < 1e6)
+              {
+                lower = upper;
+                upper *= 4.;
+              }
+            alpha = upper;
+            for (unsigned int it = 0; it < 50; ++it)
+              {
+                const auto [d1, d2] = derivatives(alpha);
+                if (std::abs(d1) <= 1e-12 * std::abs(q1) || upper - lower <=
+                                                                1e-12 * upper)
+                  break;
+                (d1 > 0. ? upper : lower) = alpha;
+                const double next = alpha - d1 / d2;
+                alpha = (next > lower && next < upper) ? next :
+                                                         0.5 * (lower + upper);
+              }
+          }
         v.add(alpha, direction);
         record.step_length = alpha;
 

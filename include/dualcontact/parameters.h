@@ -153,13 +153,14 @@ namespace dualcontact
 
     // loop 2: Uzawa on the modified Lagrangian
     double       augmentation        = 10.;   // r_rel: r = r_rel E / h_C
-    double       proximal            = 1e-2;  // chi_rel: chi = chi_rel E / L^2
+    double       proximal            = 1e-3;  // chi_rel: chi = chi_rel E / L^2
     double       uzawa_tolerance     = 1e-8;
     unsigned int max_uzawa_steps     = 500;
     // loop 3: semi-smooth Newton
     double       newton_tolerance_factor   = 1e-2;
     double       initial_inner_tolerance   = 1e-2;
-    double       inner_tolerance_reduction = 0.1;
+    double       inner_tolerance_reduction = 0.5;
+    double       inner_tolerance_factor    = 1e-2;
     unsigned int max_newton_steps          = 50;
     bool         line_search               = true;
     double       amg_rebuild_fraction      = 0.05;

@@ -115,14 +115,16 @@ namespace dualcontact
     /**
      * Loop 3: minimise M_k(v) = 1/2 a(v,v) - L(v) + (chi/2)|v - v^k|_M^2
      * + sum_s m_s/(2r) (((l1_s + r(v_n - g0))^+)^2 - l1_s^2) over v by
-     * semi-smooth Newton until |grad| <= tolerance |b|.
+     * semi-smooth Newton until |grad| <= max(final_tolerance |b|,
+     * min(envelope |b|, factor |grad_0|)), grad_0 the gradient at the start.
      */
     void
     minimise(const ContactSystem                 &system,
              const ContactSet<dim>               &contact,
              const TrilinosWrappers::MPI::Vector &v_previous,
              TrilinosWrappers::MPI::Vector       &v,
-             const double                         tolerance,
+             const double                         envelope,
+             const double                         final_tolerance,
              const unsigned int                   uzawa_step,
              IterationRecord                     &step_record,
              std::vector<IterationRecord>        &log);
@@ -144,6 +146,8 @@ namespace dualcontact
     TrilinosWrappers::SparseMatrix newton_matrix;
     std::vector<bool>              amg_active_set;
     bool                           amg_valid = false;
+    unsigned int                   cg_iterations_after_setup = 0;
+    unsigned int                   last_cg_iterations        = 0;
   };
 } // namespace dualcontact
 
