@@ -1,10 +1,9 @@
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/dofs/dof_accessor.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_q.h>
-
-#include <deal.II/dofs/dof_accessor.h>
 
 #include <deal.II/grid/grid_tools.h>
 
@@ -29,26 +28,26 @@ namespace dualcontact
   ContactProblem<dim>::ContactProblem(const Parameters &parameters,
                                       MPI_Comm          mpi_communicator,
                                       std::ostream     &out)
-    : mpi_communicator(mpi_communicator)
-    , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    , parameters(parameters)
-    , scene(parameters)
-    , computing_timer(mpi_communicator,
-                      pcout,
-                      TimerOutput::never,
-                      TimerOutput::wall_times)
-    , triangulation(mpi_communicator,
-                    typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
-    , mapping(1)
-    , fe(FE_Q<dim>(1), dim)
-    , dof_handler(triangulation)
-    , elastic_solver(parameters.solver)
-    , uzawa_solver(parameters.solver,
-                   elastic_solver,
-                   pcout,
-                   parameters.output.print_timing)
+      : mpi_communicator(mpi_communicator)
+      , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      , parameters(parameters)
+      , scene(parameters)
+      , computing_timer(mpi_communicator,
+                        pcout,
+                        TimerOutput::never,
+                        TimerOutput::wall_times)
+      , triangulation(mpi_communicator,
+                      typename Triangulation<dim>::MeshSmoothing(
+                        Triangulation<dim>::smoothing_on_refinement |
+                        Triangulation<dim>::smoothing_on_coarsening))
+      , mapping(1)
+      , fe(FE_Q<dim>(1), dim)
+      , dof_handler(triangulation)
+      , elastic_solver(parameters.solver)
+      , uzawa_solver(parameters.solver,
+                     elastic_solver,
+                     pcout,
+                     parameters.output.print_timing)
   {
     if (parameters.friction.law != FrictionLaw::none)
       throw InputError("The entry <Friction/Law> asks for friction, which this "
@@ -61,7 +60,8 @@ namespace dualcontact
   void
   ContactProblem<dim>::print_header() const
   {
-    pcout << "dualcontact: " << dim << "D, " << to_string(parameters.geometry.type)
+    pcout << "dualcontact: " << dim << "D, "
+          << to_string(parameters.geometry.type)
           << ", E = " << parameters.material.youngs_modulus
           << ", nu = " << parameters.material.poissons_ratio << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
@@ -140,7 +140,9 @@ namespace dualcontact
                          dsp,
                          mpi_communicator);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
-    solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
   }
 
   template <int dim>
@@ -218,10 +220,13 @@ namespace dualcontact
     v = 0;
     constraints.distribute(v);
 
-    const ContactSystem system{
-      system_matrix, mass_matrix, system_rhs, homogeneous_constraints,
-      result.r,      result.chi};
-    const std::size_t first = iteration_log.size();
+    const ContactSystem     system{system_matrix,
+                               mass_matrix,
+                               system_rhs,
+                               homogeneous_constraints,
+                               result.r,
+                               result.chi};
+    const std::size_t       first = iteration_log.size();
     const ContactStatistics statistics =
       uzawa_solver.solve(system, contact_set, v, iteration_log);
     for (std::size_t i = first; i < iteration_log.size(); ++i)
@@ -242,9 +247,9 @@ namespace dualcontact
     // Figures of the contact zone: total force, peak pressure, half-width
     // along t, and the error against an exact pressure (nodal quadrature).
     const Function<dim> *exact = scene.exact_pressure();
-    double force = 0, peak = 0, error2 = 0, norm2 = 0;
-    double t_min = std::numeric_limits<double>::max();
-    double t_max = -std::numeric_limits<double>::max();
+    double               force = 0, peak = 0, error2 = 0, norm2 = 0;
+    double               t_min = std::numeric_limits<double>::max();
+    double               t_max = -std::numeric_limits<double>::max();
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const ContactNode<dim> &node = contact_set.nodes[s];
@@ -284,9 +289,9 @@ namespace dualcontact
                                                  dof_handler,
                                                  solution,
                                                  scene.exact_displacement());
-    result.u_l2     = norms.u_l2;
-    result.l2_error = norms.l2;
-    result.h1_error = norms.h1_semi;
+    result.u_l2            = norms.u_l2;
+    result.l2_error        = norms.l2;
+    result.h1_error        = norms.h1_semi;
     if (cycle_results.size() > 1 && scene.exact_displacement() != nullptr)
       {
         // meshes are halved between cycles: the rate is log2 of the ratio
@@ -346,16 +351,20 @@ namespace dualcontact
             {
               cell->get_dof_indices(vector_dofs);
               typename DoFHandler<dim>::active_cell_iterator(
-                &triangulation, cell->level(), cell->index(), &scalar_dof_handler)
+                &triangulation,
+                cell->level(),
+                cell->index(),
+                &scalar_dof_handler)
                 ->get_dof_indices(scalar_dofs);
               for (unsigned int i = 0; i < scalar_dofs.size(); ++i)
                 {
                   const auto it = node_of_dof.find(
                     vector_dofs[fe.component_to_system_index(0, i)]);
-                  if (it == node_of_dof.end() || !owned.is_element(scalar_dofs[i]))
+                  if (it == node_of_dof.end() ||
+                      !owned.is_element(scalar_dofs[i]))
                     continue;
-                  const unsigned int s = it->second;
-                  const double       l1 = contact_set.l1[s];
+                  const unsigned int s            = it->second;
+                  const double       l1           = contact_set.l1[s];
                   owned_fields[0][scalar_dofs[i]] = l1;
                   owned_fields[1][scalar_dofs[i]] =
                     contact_set.nodes[s].gap0 -
@@ -376,8 +385,12 @@ namespace dualcontact
       }
     data_out.build_patches(mapping, fe.degree);
 
-    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-      parameters.output.directory + "/", "solution", cycle, mpi_communicator, 2);
+    const std::string pvtu =
+      data_out.write_vtu_with_pvtu_record(parameters.output.directory + "/",
+                                          "solution",
+                                          cycle,
+                                          mpi_communicator,
+                                          2);
 
     // a .pvd record over all cycles so ParaView shows them as a sequence
     pvtu_records.emplace_back(cycle, pvtu);
@@ -407,12 +420,10 @@ namespace dualcontact
           << ',' << r.newton_steps << ',' << r.linear_iterations << ','
           << r.amg_setups << ',' << r.contact_force << ',' << r.max_pressure
           << ',' << r.contact_half_width << ',' << r.pressure_error << ','
-          << r.u_l2 << ','
-          << r.l2_error << ',' << r.h1_error << ',' << r.l2_rate << ','
-          << r.h1_rate << ','
-          << r.time_setup << ',' << r.time_assembly << ',' << r.time_solve
-          << ',' << r.time_output << ',' << r.time_reference << ','
-          << r.memory_mb << '\n';
+          << r.u_l2 << ',' << r.l2_error << ',' << r.h1_error << ','
+          << r.l2_rate << ',' << r.h1_rate << ',' << r.time_setup << ','
+          << r.time_assembly << ',' << r.time_solve << ',' << r.time_output
+          << ',' << r.time_reference << ',' << r.memory_mb << '\n';
   }
 
   template <int dim>
@@ -428,8 +439,8 @@ namespace dualcontact
            "violation,complementarity,time\n";
     csv << std::setprecision(8);
     for (const IterationRecord &r : iteration_log)
-      csv << r.cycle << ',' << r.loop << ',' << r.uzawa_step << ','
-          << r.index << ',' << r.newton_steps << ',' << r.cg_iterations << ','
+      csv << r.cycle << ',' << r.loop << ',' << r.uzawa_step << ',' << r.index
+          << ',' << r.newton_steps << ',' << r.cg_iterations << ','
           << r.amg_setups << ',' << r.n_active << ',' << r.gradient << ','
           << r.step_length << ',' << r.change_l1 << ',' << r.change_v << ','
           << r.violation << ',' << r.complementarity << ',' << r.time << '\n';
@@ -471,7 +482,8 @@ namespace dualcontact
       return s.str();
     };
 
-    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles; ++cycle)
+    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
+         ++cycle)
       {
         if (cycle > 0)
           timed("refine mesh", [&] { refine_mesh(); });
@@ -486,15 +498,16 @@ namespace dualcontact
               << result.n_dofs << " DoFs" << seconds(result.time_setup) << '\n';
 
         result.time_assembly = timed("assemble", [&] { assemble_system(); });
-        pcout << "   assembled A and b" << seconds(result.time_assembly) << '\n';
+        pcout << "   assembled A and b" << seconds(result.time_assembly)
+              << '\n';
         result.time_solve = timed("solve", [&] { solve(); });
         if (scene.effects().contact)
           pcout << "   contact solved: " << result.uzawa_steps
-                << " Uzawa steps, " << result.newton_steps
-                << " Newton steps, " << result.linear_iterations
-                << " CG iterations, " << result.amg_setups << " AMG set-ups, "
-                << result.n_active << " of " << result.n_contact_nodes
-                << " nodes in contact" << seconds(result.time_solve) << '\n'
+                << " Uzawa steps, " << result.newton_steps << " Newton steps, "
+                << result.linear_iterations << " CG iterations, "
+                << result.amg_setups << " AMG set-ups, " << result.n_active
+                << " of " << result.n_contact_nodes << " nodes in contact"
+                << seconds(result.time_solve) << '\n'
                 << std::setprecision(8) << "   total contact force "
                 << result.contact_force << ", peak pressure "
                 << result.max_pressure << ", contact half-width "
@@ -509,14 +522,15 @@ namespace dualcontact
         if (scene.effects().contact)
           pcout << std::defaultfloat << '\n';
         else
-          pcout << "   one linear elasticity solve: " << result.linear_iterations
-                << " CG iterations" << seconds(result.time_solve) << '\n';
+          pcout << "   one linear elasticity solve: "
+                << result.linear_iterations << " CG iterations"
+                << seconds(result.time_solve) << '\n';
 
         if (parameters.solver.time_reference_solve && scene.effects().contact)
           pcout << "   reference: one linear solve on this mesh "
                 << result.reference_iterations << " CG iterations"
-                << seconds(result.time_reference) << ", contact / linear = "
-                << std::fixed << std::setprecision(2)
+                << seconds(result.time_reference)
+                << ", contact / linear = " << std::fixed << std::setprecision(2)
                 << (result.time_assembly + result.time_solve) /
                      (result.time_assembly + result.time_reference)
                 << std::defaultfloat << " (assembly included)\n";
@@ -524,7 +538,8 @@ namespace dualcontact
           Utilities::System::MemoryStats stats;
           Utilities::System::get_memory_stats(stats);
           result.memory_mb =
-            Utilities::MPI::sum(static_cast<double>(stats.VmHWM), mpi_communicator) /
+            Utilities::MPI::sum(static_cast<double>(stats.VmHWM),
+                                mpi_communicator) /
             1024.;
         }
         timed("postprocess", [&] { postprocess(result); });
@@ -535,8 +550,7 @@ namespace dualcontact
                 << ", H1 = " << result.h1_error;
         pcout << std::defaultfloat << '\n';
 
-        result.time_output =
-          timed("output", [&] { output_results(cycle); });
+        result.time_output = timed("output", [&] { output_results(cycle); });
         write_cycle_table();
         write_iteration_table();
       }

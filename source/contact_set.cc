@@ -12,19 +12,19 @@ namespace dualcontact
 {
   template <int dim>
   void
-  ContactSet<dim>::setup(const Mapping<dim>              &mapping,
-                         const DoFHandler<dim>           &dof_handler,
-                         const AffineConstraints<double> &hanging_node_constraints,
-                         const AffineConstraints<double> &all_constraints,
-                         const Scene<dim>                &scene)
+  ContactSet<dim>::setup(
+    const Mapping<dim>              &mapping,
+    const DoFHandler<dim>           &dof_handler,
+    const AffineConstraints<double> &hanging_node_constraints,
+    const AffineConstraints<double> &all_constraints,
+    const Scene<dim>                &scene)
   {
-    const MPI_Comm comm =
-      dof_handler.get_triangulation().get_communicator();
-    const FiniteElement<dim> &fe          = dof_handler.get_fe();
-    const IndexSet           &owned       = dof_handler.locally_owned_dofs();
-    const auto                contact_ids = scene.ids_with(BoundaryCondition::contact);
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+    const FiniteElement<dim> &fe    = dof_handler.get_fe();
+    const IndexSet           &owned = dof_handler.locally_owned_dofs();
+    const auto contact_ids = scene.ids_with(BoundaryCondition::contact);
 
-    normal = -scene.foundation_normal;
+    normal  = -scene.foundation_normal;
     tangent = Tensor<1, dim>();
     if (dim == 2)
       {
@@ -34,9 +34,9 @@ namespace dualcontact
 
     // Weights m_s = int_{Gamma_C} phi_s, with the weight of hanging nodes
     // handed to their masters. Every component carries the same weight.
-    TrilinosWrappers::MPI::Vector weights(owned, comm);
-    const QGauss<dim - 1>         quadrature(fe.degree + 1);
-    FEFaceValues<dim>             fe_face(mapping,
+    TrilinosWrappers::MPI::Vector        weights(owned, comm);
+    const QGauss<dim - 1>                quadrature(fe.degree + 1);
+    FEFaceValues<dim>                    fe_face(mapping,
                               fe,
                               quadrature,
                               update_values | update_JxW_values);
@@ -46,8 +46,7 @@ namespace dualcontact
     // Candidate nodes: cell-local support points on contact faces, grouped
     // by their scalar shape function (the "base" index).
     std::map<types::global_dof_index, ContactNode<dim>> candidates;
-    double                                             h_min =
-      std::numeric_limits<double>::max();
+    double h_min = std::numeric_limits<double>::max();
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -71,7 +70,8 @@ namespace dualcontact
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 if (fe.has_support_on_face(i, f))
                   {
-                    const auto [component, base] = fe.system_to_component_index(i);
+                    const auto [component, base] =
+                      fe.system_to_component_index(i);
                     ContactNode<dim> &node = on_face[base];
                     node.dofs[component]   = dof_indices[i];
                     if (component == 0)

@@ -46,14 +46,14 @@ namespace dualcontact
     Vector<double>     cell_rhs(dofs_per_cell);
     std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
 
-    const FEValuesExtractors::Vector          displacement(0);
-    std::vector<SymmetricTensor<2, dim>>      eps(dofs_per_cell);
-    std::vector<double>                       div(dofs_per_cell);
-    std::vector<Vector<double>>               load_values(quadrature.size(),
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
+    std::vector<double>                  div(dofs_per_cell);
+    std::vector<Vector<double>>          load_values(quadrature.size(),
+                                            Vector<double>(dim));
+    std::vector<Vector<double>>          traction_values(face_quadrature.size(),
                                                 Vector<double>(dim));
-    std::vector<Vector<double>> traction_values(face_quadrature.size(),
-                                                Vector<double>(dim));
-    const Function<dim> *body_force = scene.body_force();
+    const Function<dim>                 *body_force = scene.body_force();
     const auto traction_ids = scene.ids_with(BoundaryCondition::traction);
 
     system_matrix = 0;
@@ -94,9 +94,10 @@ namespace dualcontact
                                            fe_values.shape_value(j, q) * JxW;
                   if (body_force != nullptr)
                     {
-                      const unsigned int c = fe.system_to_component_index(i).first;
-                      cell_rhs(i) += load_values[q](c) *
-                                     fe_values.shape_value(i, q) * JxW;
+                      const unsigned int c =
+                        fe.system_to_component_index(i).first;
+                      cell_rhs(i) +=
+                        load_values[q](c) * fe_values.shape_value(i, q) * JxW;
                     }
                 }
             }
@@ -158,7 +159,7 @@ namespace dualcontact
     const Epetra_Map  &map         = matrix.trilinos_matrix().RowMap();
     auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
 
-    const FiniteElement<dim>      &fe = dof_handler.get_fe();
+    const FiniteElement<dim>      &fe          = dof_handler.get_fe();
     const std::vector<Point<dim>> &unit_points = fe.get_unit_support_points();
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -167,8 +168,8 @@ namespace dualcontact
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < dof_indices.size(); ++i)
             {
-              const int local = map.LID(static_cast<TrilinosWrappers::types::int_type>(
-                dof_indices[i]));
+              const int local = map.LID(
+                static_cast<TrilinosWrappers::types::int_type>(dof_indices[i]));
               if (local < 0)
                 continue; // owned by another rank
               const unsigned int   c = fe.system_to_component_index(i).first;
@@ -180,8 +181,8 @@ namespace dualcontact
               // rotation k in the plane (a, b): u_a = -r_b, u_b = r_a
               for (unsigned int k = 0; k < n_rotations; ++k)
                 {
-                  const unsigned int a = (dim == 2) ? 0 : (k == 2 ? 1 : 0);
-                  const unsigned int b = (dim == 2) ? 1 : (k == 0 ? 1 : 2);
+                  const unsigned int a     = (dim == 2) ? 0 : (k == 2 ? 1 : 0);
+                  const unsigned int b     = (dim == 2) ? 1 : (k == 0 ? 1 : 2);
                   (*modes)[dim + k][local] = (c == a) ? -r[b] :
                                              (c == b) ? r[a] :
                                                         0.;
@@ -193,7 +194,7 @@ namespace dualcontact
 
   template <int dim>
   ElasticSolver<dim>::ElasticSolver(const SolverParameters &parameters)
-    : parameters(parameters)
+      : parameters(parameters)
   {}
 
   template <int dim>
@@ -243,7 +244,7 @@ namespace dualcontact
   ElasticSolver<dim>::solve(const TrilinosWrappers::SparseMatrix &matrix,
                             TrilinosWrappers::MPI::Vector        &x,
                             const TrilinosWrappers::MPI::Vector  &rhs,
-                            const double                          tolerance) const
+                            const double tolerance) const
   {
     Assert(preconditioner != nullptr, ExcMessage("initialize() first"));
     const double relative =
@@ -269,29 +270,29 @@ namespace dualcontact
                     ExcMessage("CG did not converge in " +
                                std::to_string(exc.last_step) +
                                " iterations (residual " +
-                               std::to_string(exc.last_residual) +
-                               ", wanted " + std::to_string(relative * rhs_norm) +
+                               std::to_string(exc.last_residual) + ", wanted " +
+                               std::to_string(relative * rhs_norm) +
                                "). Raise <Solver/Maximum linear iterations> or "
                                "check that the scene holds the body."));
       }
     return control.last_step();
   }
 
-#define DUALCONTACT_INSTANTIATE(dim)                                          \
-  template void assemble_elasticity<dim>(const Mapping<dim> &,                \
-                                         const DoFHandler<dim> &,             \
-                                         const Scene<dim> &,                  \
-                                         const AffineConstraints<double> &,   \
-                                         TrilinosWrappers::SparseMatrix &,    \
-                                         TrilinosWrappers::MPI::Vector &,     \
-                                         TrilinosWrappers::SparseMatrix *);   \
-  template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(         \
-    const Mapping<dim> &,                                                     \
-    const DoFHandler<dim> &,                                                  \
-    const TrilinosWrappers::SparseMatrix &,                                   \
-    const bool,                                                               \
-    const Point<dim> &,                                                       \
-    const double);                                                            \
+#define DUALCONTACT_INSTANTIATE(dim)                                        \
+  template void assemble_elasticity<dim>(const Mapping<dim> &,              \
+                                         const DoFHandler<dim> &,           \
+                                         const Scene<dim> &,                \
+                                         const AffineConstraints<double> &, \
+                                         TrilinosWrappers::SparseMatrix &,  \
+                                         TrilinosWrappers::MPI::Vector &,   \
+                                         TrilinosWrappers::SparseMatrix *); \
+  template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(       \
+    const Mapping<dim> &,                                                   \
+    const DoFHandler<dim> &,                                                \
+    const TrilinosWrappers::SparseMatrix &,                                 \
+    const bool,                                                             \
+    const Point<dim> &,                                                     \
+    const double);                                                          \
   template class ElasticSolver<dim>;
 
   DUALCONTACT_INSTANTIATE(2)

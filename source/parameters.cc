@@ -15,7 +15,8 @@ namespace dualcontact
 
   namespace
   {
-    const char *const condition_names = "free|fixed|normal fixed|traction|contact";
+    const char *const condition_names =
+      "free|fixed|normal fixed|traction|contact";
 
     BoundaryCondition
     parse_condition(const std::string &name)
@@ -46,12 +47,11 @@ namespace dualcontact
         {
           if (item.empty())
             continue;
-          const auto colon = item.find(':');
+          const auto        colon = item.find(':');
           const std::string key   = Utilities::trim(item.substr(0, colon));
           const std::string value = Utilities::trim(item.substr(colon + 1));
-          result.emplace_back(static_cast<boundary_id>(
-                                Utilities::string_to_int(key)),
-                              value);
+          result.emplace_back(
+            static_cast<boundary_id>(Utilities::string_to_int(key)), value);
         }
       return result;
     }
@@ -71,7 +71,8 @@ namespace dualcontact
     std::vector<double>
     parse_doubles(const std::string &text)
     {
-      return Utilities::string_to_double(Utilities::split_string_list(text, ','));
+      return Utilities::string_to_double(
+        Utilities::split_string_list(text, ','));
     }
 
     // The pattern of an "id: value" list (ids 0..255).
@@ -115,7 +116,8 @@ namespace dualcontact
     {
       const std::string message = short_message(exc);
       ExitCode          code    = exit_unknown_entry;
-      if (message.find("does not match the given pattern") != std::string::npos ||
+      if (message.find("does not match the given pattern") !=
+            std::string::npos ||
           message.find("doesn't match the pattern") != std::string::npos)
         code = exit_invalid_value;
       throw InputError("Error in " + source + ": " + message, code);
@@ -250,13 +252,13 @@ namespace dualcontact
   GeometryParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    dimension = prm.get_integer("Dimension");
+    dimension               = prm.get_integer("Dimension");
     const std::string shape = prm.get("Type");
-    type = shape == "rectangle" ? GeometryType::rectangle :
-           shape == "half disc" ? GeometryType::half_disc :
-                                  GeometryType::quarter_disc;
-    lower_left  = parse_doubles(prm.get("Lower left corner"));
-    upper_right = parse_doubles(prm.get("Upper right corner"));
+    type                    = shape == "rectangle" ? GeometryType::rectangle :
+                              shape == "half disc" ? GeometryType::half_disc :
+                                                     GeometryType::quarter_disc;
+    lower_left              = parse_doubles(prm.get("Lower left corner"));
+    upper_right             = parse_doubles(prm.get("Upper right corner"));
     subdivisions.clear();
     for (const int n : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Subdivisions"), ',')))
@@ -381,8 +383,8 @@ namespace dualcontact
     for (const auto &[id, name] :
          parse_id_map(prm.get("Conditions"), "Boundary conditions/Conditions"))
       conditions[id] = parse_condition(name);
-    displacements =
-      parse_id_map(prm.get("Displacements"), "Boundary conditions/Displacements");
+    displacements = parse_id_map(prm.get("Displacements"),
+                                 "Boundary conditions/Displacements");
     tractions =
       parse_id_map(prm.get("Tractions"), "Boundary conditions/Tractions");
     prm.leave_subsection();
@@ -424,12 +426,13 @@ namespace dualcontact
                       Patterns::List(Patterns::Double(), 2, 3),
                       "A point p on the boundary of the rigid foundation (a "
                       "half-space) [length].");
-    prm.declare_entry("Normal",
-                      "0, 1",
-                      Patterns::List(Patterns::Double(), 2, 3),
-                      "Normal m of the foundation's boundary, pointing from the "
-                      "foundation into the body [-]. Normalised on input; must "
-                      "not be zero. The initial gap is g0(x) = (x - p).m.");
+    prm.declare_entry(
+      "Normal",
+      "0, 1",
+      Patterns::List(Patterns::Double(), 2, 3),
+      "Normal m of the foundation's boundary, pointing from the "
+      "foundation into the body [-]. Normalised on input; must "
+      "not be zero. The initial gap is g0(x) = (x - p).m.");
     prm.leave_subsection();
   }
 
@@ -473,11 +476,11 @@ namespace dualcontact
   {
     prm.enter_subsection("Friction");
     const std::string name = prm.get("Law");
-    law         = name == "none"  ? FrictionLaw::none :
-                  name == "given" ? FrictionLaw::given :
-                                    FrictionLaw::coulomb;
-    coefficient = prm.get("Coefficient");
-    threshold   = prm.get("Threshold");
+    law                    = name == "none"  ? FrictionLaw::none :
+                             name == "given" ? FrictionLaw::given :
+                                               FrictionLaw::coulomb;
+    coefficient            = prm.get("Coefficient");
+    threshold              = prm.get("Threshold");
     prm.leave_subsection();
   }
 
@@ -563,12 +566,13 @@ namespace dualcontact
                       Patterns::Integer(1),
                       "Loop 3 gives up (with an error) after this many steps "
                       "in one Uzawa step [-].");
-    prm.declare_entry("Line search",
-                      "true",
-                      Patterns::Bool(),
-                      "Exact line search on the Uzawa step's functional (a convex "
-                      "piecewise quadratic along each Newton direction); makes "
-                      "Newton globally convergent. false: full steps.");
+    prm.declare_entry(
+      "Line search",
+      "true",
+      Patterns::Bool(),
+      "Exact line search on the Uzawa step's functional (a convex "
+      "piecewise quadratic along each Newton direction); makes "
+      "Newton globally convergent. false: full steps.");
     prm.declare_entry(
       "AMG rebuild fraction",
       "0.05",
@@ -593,13 +597,13 @@ namespace dualcontact
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    linear_tolerance      = prm.get_double("Linear solver tolerance");
-    max_linear_iterations = prm.get_integer("Maximum linear iterations");
-    amg_rotation_modes    = prm.get_bool("AMG with rotation modes");
-    augmentation          = prm.get_double("Augmentation parameter");
-    proximal              = prm.get_double("Proximal parameter");
-    uzawa_tolerance       = prm.get_double("Uzawa tolerance");
-    max_uzawa_steps       = prm.get_integer("Maximum Uzawa steps");
+    linear_tolerance          = prm.get_double("Linear solver tolerance");
+    max_linear_iterations     = prm.get_integer("Maximum linear iterations");
+    amg_rotation_modes        = prm.get_bool("AMG with rotation modes");
+    augmentation              = prm.get_double("Augmentation parameter");
+    proximal                  = prm.get_double("Proximal parameter");
+    uzawa_tolerance           = prm.get_double("Uzawa tolerance");
+    max_uzawa_steps           = prm.get_integer("Maximum Uzawa steps");
     newton_tolerance_factor   = prm.get_double("Newton tolerance factor");
     initial_inner_tolerance   = prm.get_double("Initial inner tolerance");
     inner_tolerance_reduction = prm.get_double("Inner tolerance reduction");
@@ -800,13 +804,14 @@ namespace dualcontact
   void
   Parameters::check_consistency() const
   {
-    const unsigned int dim = geometry.dimension;
+    const unsigned int dim      = geometry.dimension;
     const auto         need_dim = [dim](const std::vector<double> &values,
-                                const std::string          &entry) {
+                                const std::string         &entry) {
       if (values.size() != dim)
         throw InputError("The entry <" + entry + "> needs " +
-                           std::to_string(dim) + " values (one per dimension), "
-                                                 "not " +
+                           std::to_string(dim) +
+                           " values (one per dimension), "
+                                   "not " +
                            std::to_string(values.size()) + ".",
                          exit_inconsistent);
     };
@@ -833,11 +838,11 @@ namespace dualcontact
       throw InputError("The entry <Geometry/Type> 'quarter disc' exists in 2D "
                        "only.",
                        exit_inconsistent);
-    const unsigned int n_ids =
-      geometry.type == GeometryType::rectangle    ? 2 * dim :
-      geometry.type == GeometryType::quarter_disc ? 3 :
-                                                    2;
-    const std::string shape = to_string(geometry.type);
+    const unsigned int n_ids = geometry.type == GeometryType::rectangle ?
+                                 2 * dim :
+                               geometry.type == GeometryType::quarter_disc ? 3 :
+                                                                             2;
+    const std::string  shape = to_string(geometry.type);
     for (const auto &[id, condition] : boundary.conditions)
       if (id >= n_ids)
         throw InputError("The entry <Boundary conditions/Conditions> names "
@@ -848,8 +853,8 @@ namespace dualcontact
                          exit_inconsistent);
 
     const auto check_data = [&](const std::map<boundary_id, std::string> &data,
-                                const BoundaryCondition                   wanted,
-                                const std::string                         &entry) {
+                                const BoundaryCondition wanted,
+                                const std::string      &entry) {
       for (const auto &[id, expression] : data)
         if (boundary.condition(id) != wanted)
           throw InputError("The entry <Boundary conditions/" + entry +
@@ -859,7 +864,9 @@ namespace dualcontact
                              to_string(wanted) + "'.",
                            exit_inconsistent);
     };
-    check_data(boundary.displacements, BoundaryCondition::fixed, "Displacements");
+    check_data(boundary.displacements,
+               BoundaryCondition::fixed,
+               "Displacements");
     check_data(boundary.tractions, BoundaryCondition::traction, "Tractions");
     for (const boundary_id id : boundary.ids_with(BoundaryCondition::traction))
       if (boundary.tractions.count(id) == 0)

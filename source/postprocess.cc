@@ -12,8 +12,8 @@ namespace dualcontact
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(
     const MaterialParameters &material)
-    : lambda(material.lambda())
-    , mu(material.mu())
+      : lambda(material.lambda())
+      , mu(material.mu())
   {}
 
   template <int dim>
@@ -27,7 +27,7 @@ namespace dualcontact
         Tensor<2, dim> grad;
         for (unsigned int d = 0; d < dim; ++d)
           grad[d] = inputs.solution_gradients[p][d];
-        const SymmetricTensor<2, dim> eps   = symmetrize(grad);
+        const SymmetricTensor<2, dim> eps       = symmetrize(grad);
         const double                  trace_eps = trace(eps);
         const SymmetricTensor<2, dim> sigma =
           lambda * trace_eps * unit_symmetric_tensor<dim>() + 2. * mu * eps;
@@ -83,20 +83,15 @@ namespace dualcontact
                       const TrilinosWrappers::MPI::Vector &solution,
                       const Function<dim>                 *exact)
   {
-    const auto &triangulation = dof_handler.get_triangulation();
+    const auto       &triangulation = dof_handler.get_triangulation();
     const QGauss<dim> quadrature(dof_handler.get_fe().degree + 2);
     Vector<double>    cellwise(triangulation.n_active_cells());
     const Functions::ZeroFunction<dim> zero(dim);
 
-    const auto norm = [&](const Function<dim>          &reference,
+    const auto norm = [&](const Function<dim>        &reference,
                           const VectorTools::NormType type) {
-      VectorTools::integrate_difference(mapping,
-                                        dof_handler,
-                                        solution,
-                                        reference,
-                                        cellwise,
-                                        quadrature,
-                                        type);
+      VectorTools::integrate_difference(
+        mapping, dof_handler, solution, reference, cellwise, quadrature, type);
       return VectorTools::compute_global_error(triangulation, cellwise, type);
     };
 

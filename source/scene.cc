@@ -23,14 +23,15 @@ namespace dualcontact
 {
   namespace
   {
-    /** Parse "a; b" into a vector-valued function, naming the entry on error. */
+    /** Parse "a; b" into a vector-valued function, naming the entry on error.
+     */
     template <int dim>
     std::unique_ptr<Function<dim>>
-    make_function(const std::string          &expression,
-                  const unsigned int          n_components,
-                  const MaterialParameters   &material,
-                  const std::string          &entry,
-                  const double                length)
+    make_function(const std::string        &expression,
+                  const unsigned int        n_components,
+                  const MaterialParameters &material,
+                  const std::string        &entry,
+                  const double              length)
     {
       const std::map<std::string, double> constants = {
         {"pi", numbers::PI},
@@ -40,8 +41,7 @@ namespace dualcontact
         {"mu", material.mu()}};
       const std::string variables = dim == 2 ? "x,y" : "x,y,z";
 
-      const auto n_given =
-        Utilities::split_string_list(expression, ';').size();
+      const auto n_given = Utilities::split_string_list(expression, ';').size();
       if (n_given != n_components)
         throw InputError("The entry <" + entry + "> needs " +
                            std::to_string(n_components) +
@@ -51,16 +51,17 @@ namespace dualcontact
 
       // Gradients (for H1 errors) by fourth-order differences with a step
       // relative to the body's size.
-      auto function = std::make_unique<FunctionParser<dim>>(n_components,
-                                                            0.,
-                                                            1e-4 * length);
+      auto function =
+        std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-4 * length);
       function->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
       // deal.II prints muparser's diagnostics on std::cerr before it
       // throws; the user gets our one-line message instead.
-      std::ostringstream       muparser_diagnostics;
-      std::streambuf *const    cerr_buffer =
+      std::ostringstream    muparser_diagnostics;
+      std::streambuf *const cerr_buffer =
         std::cerr.rdbuf(muparser_diagnostics.rdbuf());
-      const auto restore_cerr = [cerr_buffer]() { std::cerr.rdbuf(cerr_buffer); };
+      const auto restore_cerr = [cerr_buffer]() {
+        std::cerr.rdbuf(cerr_buffer);
+      };
       try
         {
           function->initialize(variables, expression, constants);
@@ -100,10 +101,12 @@ namespace dualcontact
                       "no: one linear elasticity solve per mesh")
         << '\n'
         << "  friction                    : "
-        << (!contact                          ? "no (no contact)" :
-            friction == FrictionLaw::none    ? "no" :
-            friction == FrictionLaw::given   ? "given threshold (Tresca)" :
-                                                "Coulomb (successive approximations)")
+        << (!contact ? "no (no contact)" :
+            friction == FrictionLaw::none ?
+                       "no" :
+            friction == FrictionLaw::given ?
+                       "given threshold (Tresca)" :
+                       "Coulomb (successive approximations)")
         << '\n'
         << "  body force                  : "
         << (body_force ? "yes" : "no (not assembled)") << '\n'
@@ -114,7 +117,7 @@ namespace dualcontact
 
   template <int dim>
   Scene<dim>::Scene(const Parameters &parameters)
-    : parameters(parameters)
+      : parameters(parameters)
   {
     AssertThrow(parameters.geometry.dimension == dim,
                 ExcMessage("Scene<dim> built for the wrong dimension."));
@@ -126,7 +129,8 @@ namespace dualcontact
     for (const types::boundary_id id : ids_with(BoundaryCondition::fixed))
       {
         const auto it = boundary.displacements.find(id);
-        if (it != boundary.displacements.end() && !is_zero_expression(it->second))
+        if (it != boundary.displacements.end() &&
+            !is_zero_expression(it->second))
           displacements[id] =
             make_function<dim>(it->second,
                                dim,
@@ -138,37 +142,31 @@ namespace dualcontact
       {
         const std::string &expression = boundary.tractions.at(id);
         if (!is_zero_expression(expression))
-          tractions[id] = make_function<dim>(expression,
-                                             dim,
-                                             material,
-                                             "Boundary conditions/Tractions",
-                               length);
+          tractions[id] = make_function<dim>(
+            expression, dim, material, "Boundary conditions/Tractions", length);
       }
     if (!is_zero_expression(parameters.loads.body_force))
-      body_force_ = make_function<dim>(parameters.loads.body_force,
-                                       dim,
-                                       material,
-                                       "Loads/Body force",
-                               length);
+      body_force_ = make_function<dim>(
+        parameters.loads.body_force, dim, material, "Loads/Body force", length);
     else
       make_function<dim>(parameters.loads.body_force,
                          dim,
                          material,
                          "Loads/Body force",
-                               length); // checks the component count
+                         length); // checks the component count
     if (!parameters.exact.displacement.empty())
       exact_ = make_function<dim>(parameters.exact.displacement,
                                   dim,
                                   material,
                                   "Exact solution/Displacement",
-                               length);
+                                  length);
 
     if (!parameters.exact.contact_pressure.empty())
       exact_pressure_ = make_function<dim>(parameters.exact.contact_pressure,
                                            1,
                                            material,
                                            "Exact solution/Contact pressure",
-                               length);
+                                           length);
 
     foundation_point  = to_point<dim>(parameters.foundation.point);
     foundation_normal = to_point<dim>(parameters.foundation.normal);
@@ -194,8 +192,9 @@ namespace dualcontact
   Scene<dim>::displacement(const types::boundary_id id) const
   {
     const auto it = displacements.find(id);
-    return it == displacements.end() ? static_cast<const Function<dim> &>(zero) :
-                                       *it->second;
+    return it == displacements.end() ?
+             static_cast<const Function<dim> &>(zero) :
+             *it->second;
   }
 
   template <int dim>
@@ -266,7 +265,7 @@ namespace dualcontact
           return part;
         };
         Triangulation<dim> serial;
-        const auto lower_right = turn([&](const Point<dim> &p) {
+        const auto         lower_right = turn([&](const Point<dim> &p) {
           Point<dim> q;
           if (dim == 2)
             q = Point<dim>(p[1], -p[0]);
@@ -279,10 +278,11 @@ namespace dualcontact
           return q + center;
         });
         if (dim == 2 && g.type == GeometryType::half_disc)
-          GridGenerator::merge_triangulations(
-            lower_right,
-            turn([&](const Point<dim> &p) { return center - p; }),
-            serial);
+          GridGenerator::merge_triangulations(lower_right,
+                                              turn([&](const Point<dim> &p) {
+                                                return center - p;
+                                              }),
+                                              serial);
         else
           serial.copy_triangulation(lower_right);
         serial.reset_all_manifolds();
@@ -314,7 +314,8 @@ namespace dualcontact
         triangulation.set_manifold(1, inner);
       }
 
-    triangulation.refine_global(parameters.refinement.initial_global_refinement);
+    triangulation.refine_global(
+      parameters.refinement.initial_global_refinement);
 
     double distance = g.pre_refinement_distance;
     for (unsigned int step = 0; step < g.pre_refinement_steps;
@@ -356,8 +357,8 @@ namespace dualcontact
           const unsigned int   k = i - dim; // rotation in the plane (a, b)
           const unsigned int   a = (dim == 2) ? 0 : (k == 2 ? 1 : 0);
           const unsigned int   b = (dim == 2) ? 1 : (k == 0 ? 1 : 2);
-          m[a] = -r[b];
-          m[b] = r[a];
+          m[a]                   = -r[b];
+          m[b]                   = r[a];
         }
       return m;
     };
@@ -375,8 +376,8 @@ namespace dualcontact
                               quadrature,
                               update_quadrature_points | update_normal_vectors |
                                 update_JxW_values);
-    FullMatrix<double> gram(n_modes, n_modes);
-    double             measure = 0;
+    FullMatrix<double>    gram(n_modes, n_modes);
+    double                measure = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &face : cell->face_iterators())

@@ -36,19 +36,18 @@ namespace dualcontact
                                 ElasticSolver<dim>     &linear_solver,
                                 ConditionalOStream     &pcout,
                                 const bool              print_timing)
-    : parameters(parameters)
-    , linear_solver(linear_solver)
-    , pcout(pcout)
-    , print_timing(print_timing)
+      : parameters(parameters)
+      , linear_solver(linear_solver)
+      , pcout(pcout)
+      , print_timing(print_timing)
   {}
 
   template <int dim>
   void
-  UzawaSolver<dim>::augmented_pressures(
-    const ContactSet<dim>               &contact,
-    const TrilinosWrappers::MPI::Vector &v,
-    const double                         r,
-    std::vector<double>                 &z) const
+  UzawaSolver<dim>::augmented_pressures(const ContactSet<dim> &contact,
+                                        const TrilinosWrappers::MPI::Vector &v,
+                                        const double                         r,
+                                        std::vector<double> &z) const
   {
     z.resize(contact.n_local_nodes());
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
@@ -84,11 +83,10 @@ namespace dualcontact
 
   template <int dim>
   double
-  UzawaSolver<dim>::time_reference_solve(
-    const ContactSystem                 &system,
-    const ContactSet<dim>               &contact,
-    const TrilinosWrappers::MPI::Vector &v,
-    unsigned int                        &iterations)
+  UzawaSolver<dim>::time_reference_solve(const ContactSystem   &system,
+                                         const ContactSet<dim> &contact,
+                                         const TrilinosWrappers::MPI::Vector &v,
+                                         unsigned int &iterations)
   {
     std::vector<double> z;
     augmented_pressures(contact, v, system.r, z);
@@ -114,7 +112,7 @@ namespace dualcontact
                           TrilinosWrappers::MPI::Vector &v,
                           std::vector<IterationRecord>  &log)
   {
-    const MPI_Comm comm = v.get_mpi_communicator();
+    const MPI_Comm comm      = v.get_mpi_communicator();
     const double   tolerance = parameters.uzawa_tolerance;
     const double   final_inner_tolerance =
       parameters.newton_tolerance_factor * tolerance;
@@ -157,7 +155,7 @@ namespace dualcontact
         augmented_pressures(contact, v, system.r, z);
         double                  l1_change2 = 0, l1_norm2 = 0, l1_max = 0;
         double                  violation = 0, complementarity = 0;
-        types::global_dof_index n_active  = 0;
+        types::global_dof_index n_active = 0;
         for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
           {
             const double l1_new = positive_part(z[s]);
@@ -180,9 +178,9 @@ namespace dualcontact
 
         const double v_norm_inf = v.linfty_norm();
         v_previous.sadd(-1., 1., v); // now v - v_previous
-        record.change_l1       = relative(std::sqrt(l1_change2), std::sqrt(l1_norm2));
-        record.change_v        = relative(v_previous.l2_norm(), v.l2_norm());
-        record.violation       = relative(violation, v_norm_inf);
+        record.change_l1 = relative(std::sqrt(l1_change2), std::sqrt(l1_norm2));
+        record.change_v  = relative(v_previous.l2_norm(), v.l2_norm());
+        record.violation = relative(violation, v_norm_inf);
         record.complementarity = relative(complementarity, l1_max * v_norm_inf);
         record.n_active        = n_active;
         timer.stop();
@@ -199,8 +197,8 @@ namespace dualcontact
         line << "   Uzawa " << std::setw(4) << k << ": Newton " << std::setw(2)
              << record.newton_steps << ", CG " << std::setw(4)
              << record.cg_iterations << ", active " << std::setw(6) << n_active
-             << std::scientific << std::setprecision(2)
-             << ", d(l1) " << record.change_l1 << ", d(v) " << record.change_v
+             << std::scientific << std::setprecision(2) << ", d(l1) "
+             << record.change_l1 << ", d(v) " << record.change_v
              << ", violation " << record.violation << ", compl. "
              << record.complementarity;
         if (print_timing)
@@ -235,18 +233,18 @@ namespace dualcontact
                              const TrilinosWrappers::MPI::Vector &v_previous,
                              TrilinosWrappers::MPI::Vector       &v,
                              const double                         envelope,
-                             const double                         final_tolerance,
-                             const unsigned int                   uzawa_step,
-                             IterationRecord                     &step_record,
-                             std::vector<IterationRecord>        &log)
+                             const double                  final_tolerance,
+                             const unsigned int            uzawa_step,
+                             IterationRecord              &step_record,
+                             std::vector<IterationRecord> &log)
   {
-    const MPI_Comm  comm = v.get_mpi_communicator();
-    const auto     &K    = system.stiffness;
-    const auto     &constraints = system.homogeneous_constraints;
-    const double    r           = system.r;
-    const unsigned  n_nodes     = contact.n_local_nodes();
-    const double    load_norm   = system.load.l2_norm();
-    const double    reference   = load_norm > 0. ? load_norm : 1.;
+    const MPI_Comm comm        = v.get_mpi_communicator();
+    const auto    &K           = system.stiffness;
+    const auto    &constraints = system.homogeneous_constraints;
+    const double   r           = system.r;
+    const unsigned n_nodes     = contact.n_local_nodes();
+    const double   load_norm   = system.load.l2_norm();
+    const double   reference   = load_norm > 0. ? load_norm : 1.;
 
     // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k.
     TrilinosWrappers::MPI::Vector rhs(system.load), tmp(system.load);
@@ -255,11 +253,11 @@ namespace dualcontact
 
     TrilinosWrappers::MPI::Vector smooth_gradient(rhs), gradient(rhs),
       direction(rhs), direction_free(rhs), newton_rhs(rhs);
-    std::vector<double> z, dn(n_nodes);
-    std::vector<bool>   active(n_nodes);
-    Vector<double>      local_vector(dim);
+    std::vector<double>                  z, dn(n_nodes);
+    std::vector<bool>                    active(n_nodes);
+    Vector<double>                       local_vector(dim);
     std::vector<types::global_dof_index> local_dofs(dim);
-    const Tensor<1, dim> &n = contact.normal;
+    const Tensor<1, dim>                &n = contact.normal;
 
     double target = 0.; // absolute gradient tolerance of this Uzawa step
     for (unsigned int j = 0;; ++j)
@@ -352,8 +350,8 @@ namespace dualcontact
         if (rebuild)
           {
             linear_solver.initialize(newton_matrix);
-            amg_active_set = active;
-            amg_valid      = true;
+            amg_active_set    = active;
+            amg_valid         = true;
             record.amg_setups = 1;
           }
 
@@ -431,13 +429,13 @@ namespace dualcontact
             for (unsigned int it = 0; it < 50; ++it)
               {
                 const auto [d1, d2] = derivatives(alpha);
-                if (std::abs(d1) <= 1e-12 * std::abs(q1) || upper - lower <=
-                                                                1e-12 * upper)
+                if (std::abs(d1) <= 1e-12 * std::abs(q1) ||
+                    upper - lower <= 1e-12 * upper)
                   break;
                 (d1 > 0. ? upper : lower) = alpha;
-                const double next = alpha - d1 / d2;
-                alpha = (next > lower && next < upper) ? next :
-                                                         0.5 * (lower + upper);
+                const double next         = alpha - d1 / d2;
+                alpha =
+                  (next > lower && next < upper) ? next : 0.5 * (lower + upper);
               }
           }
         v.add(alpha, direction);

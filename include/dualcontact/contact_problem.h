@@ -35,39 +35,39 @@ namespace dualcontact
   /** What one refinement cycle produced: one row of the cycle table. */
   struct CycleResult
   {
-    unsigned int            cycle             = 0;
-    types::global_cell_index n_cells          = 0;
-    types::global_dof_index n_dofs            = 0;
-    unsigned int            linear_iterations = 0;
-    double                  u_l2              = 0.; // ||u||_L2
-    double                  l2_error          = 0.; // vs the exact solution
-    double                  h1_error          = 0.;
-    double                  l2_rate           = 0.; // log2(e_{k-1}/e_k)
-    double                  h1_rate           = 0.;
+    unsigned int             cycle             = 0;
+    types::global_cell_index n_cells           = 0;
+    types::global_dof_index  n_dofs            = 0;
+    unsigned int             linear_iterations = 0;
+    double                   u_l2              = 0.; // ||u||_L2
+    double                   l2_error          = 0.; // vs the exact solution
+    double                   h1_error          = 0.;
+    double                   l2_rate           = 0.; // log2(e_{k-1}/e_k)
+    double                   h1_rate           = 0.;
     // contact (zero without a contact boundary)
-    types::global_dof_index n_contact_nodes   = 0;
-    types::global_dof_index n_active          = 0;
-    unsigned int            uzawa_steps       = 0;
-    unsigned int            newton_steps      = 0;
-    unsigned int            amg_setups        = 0;
-    double                  uzawa_rate        = 0.; // observed contraction
-    double                  l1_error_estimate = 0.; // relative, from the rate
-    double                  contact_force     = 0.; // sum_s m_s l1_s
-    double                  max_pressure      = 0.; // max_s l1_s
+    types::global_dof_index n_contact_nodes    = 0;
+    types::global_dof_index n_active           = 0;
+    unsigned int            uzawa_steps        = 0;
+    unsigned int            newton_steps       = 0;
+    unsigned int            amg_setups         = 0;
+    double                  uzawa_rate         = 0.; // observed contraction
+    double                  l1_error_estimate  = 0.; // relative, from the rate
+    double                  contact_force      = 0.; // sum_s m_s l1_s
+    double                  max_pressure       = 0.; // max_s l1_s
     double                  contact_half_width = 0.; // 2D: half the extent
                                                      // of the active nodes
                                                      // along t
-    double                  pressure_error    = 0.; // relative, nodal L2
-    double                  r                 = 0.; // augmentation used
-    double                  chi               = 0.; // proximal weight used
-    double                  time_setup        = 0.; // wall times [s]
-    double                  time_assembly     = 0.;
-    double                  time_solve        = 0.;
-    double                  time_output       = 0.;
+    double pressure_error = 0.;                      // relative, nodal L2
+    double r              = 0.;                      // augmentation used
+    double chi            = 0.;                      // proximal weight used
+    double time_setup     = 0.;                      // wall times [s]
+    double time_assembly  = 0.;
+    double time_solve     = 0.;
+    double time_output    = 0.;
     // benchmarks (Solver/Time a reference linear solve)
-    double                  time_reference    = 0.; // AMG + CG of one solve
-    unsigned int            reference_iterations = 0;
-    double                  memory_mb         = 0.; // peak RSS, all ranks
+    double       time_reference       = 0.; // AMG + CG of one solve
+    unsigned int reference_iterations = 0;
+    double       memory_mb            = 0.; // peak RSS, all ranks
   };
 
   template <int dim>
@@ -187,7 +187,7 @@ namespace dualcontact
     std::vector<IterationRecord> iteration_log;
 
     // per-cycle figures, and the (cycle, file) list of the .pvd record
-    std::vector<CycleResult>                      cycle_results;
+    std::vector<CycleResult>                    cycle_results;
     std::vector<std::pair<double, std::string>> pvtu_records;
   };
 } // namespace dualcontact

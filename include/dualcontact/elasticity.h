@@ -35,13 +35,13 @@ namespace dualcontact
    */
   template <int dim>
   void
-  assemble_elasticity(const Mapping<dim>               &mapping,
-                      const DoFHandler<dim>            &dof_handler,
-                      const Scene<dim>                 &scene,
-                      const AffineConstraints<double>  &constraints,
-                      TrilinosWrappers::SparseMatrix   &system_matrix,
-                      TrilinosWrappers::MPI::Vector    &system_rhs,
-                      TrilinosWrappers::SparseMatrix   *mass_matrix = nullptr);
+  assemble_elasticity(const Mapping<dim>              &mapping,
+                      const DoFHandler<dim>           &dof_handler,
+                      const Scene<dim>                &scene,
+                      const AffineConstraints<double> &constraints,
+                      TrilinosWrappers::SparseMatrix  &system_matrix,
+                      TrilinosWrappers::MPI::Vector   &system_rhs,
+                      TrilinosWrappers::SparseMatrix  *mass_matrix = nullptr);
 
   /**
    * The rigid-body modes of the displacement space (dim translations and
@@ -102,10 +102,10 @@ namespace dualcontact
     }
 
   private:
-    const SolverParameters                              &parameters;
-    bool                                                 higher_order = false;
-    std::unique_ptr<Epetra_MultiVector>                  modes;
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG>   preconditioner;
+    const SolverParameters                            &parameters;
+    bool                                               higher_order = false;
+    std::unique_ptr<Epetra_MultiVector>                modes;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> preconditioner;
   };
 } // namespace dualcontact
 

@@ -1,4 +1,5 @@
-// Errors in the user's input, and the exit status each kind ends the program with.
+// Errors in the user's input, and the exit status each kind ends the program
+// with.
 #ifndef dualcontact_input_error_h
 #define dualcontact_input_error_h
 
@@ -18,9 +19,9 @@ namespace dualcontact
     exit_usage            = 2, // wrong command line
     exit_cannot_read_file = 3, // parameter file missing or unreadable
     exit_unknown_entry    = 4, // unknown entry/subsection, malformed line
-    exit_invalid_value    = 5, // a value that does not match its pattern or range
-    exit_inconsistent     = 6, // entries that contradict each other
-    exit_no_equilibrium   = 7  // a load the foundation cannot hold
+    exit_invalid_value  = 5, // a value that does not match its pattern or range
+    exit_inconsistent   = 6, // entries that contradict each other
+    exit_no_equilibrium = 7  // a load the foundation cannot hold
   };
 
   /**
@@ -32,8 +33,8 @@ namespace dualcontact
   {
   public:
     InputError(const std::string &message, const ExitCode code)
-      : std::runtime_error(message)
-      , code(code)
+        : std::runtime_error(message)
+        , code(code)
     {}
 
     const ExitCode code;

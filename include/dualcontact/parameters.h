@@ -28,7 +28,8 @@ namespace dualcontact
   {
     free,         // zero traction
     fixed,        // all displacement components prescribed (Gamma_D)
-    normal_fixed, // v.n = 0, tangential part free: a frictionless slider (Gamma_0)
+    normal_fixed, // v.n = 0, tangential part free: a frictionless slider
+                  // (Gamma_0)
     traction,     // traction vector prescribed (Gamma_N)
     contact       // unilateral contact with the rigid foundation (Gamma_C)
   };
@@ -53,13 +54,13 @@ namespace dualcontact
   /** Geometry and initial mesh. */
   struct GeometryParameters
   {
-    unsigned int        dimension = 2;
-    GeometryType        type      = GeometryType::rectangle;
-    std::vector<double> lower_left;
-    std::vector<double> upper_right;
+    unsigned int              dimension = 2;
+    GeometryType              type      = GeometryType::rectangle;
+    std::vector<double>       lower_left;
+    std::vector<double>       upper_right;
     std::vector<unsigned int> subdivisions;
     std::vector<double>       center;
-    double                    radius = 1.;
+    double                    radius                  = 1.;
     unsigned int              pre_refinement_steps    = 0;
     double                    pre_refinement_distance = 0.;
     double                    pre_refinement_grading  = 1.;
@@ -73,7 +74,7 @@ namespace dualcontact
   /** Isotropic linear elasticity; plane strain in 2D. */
   struct MaterialParameters
   {
-    double youngs_modulus  = 1.;
+    double youngs_modulus = 1.;
     double poissons_ratio = 0.3;
 
     double
@@ -152,10 +153,10 @@ namespace dualcontact
     bool         amg_rotation_modes    = true;
 
     // loop 2: Uzawa on the modified Lagrangian
-    double       augmentation        = 10.;   // r_rel: r = r_rel E / h_C
-    double       proximal            = 1e-3;  // chi_rel: chi = chi_rel E / L^2
-    double       uzawa_tolerance     = 1e-8;
-    unsigned int max_uzawa_steps     = 500;
+    double       augmentation    = 10.;  // r_rel: r = r_rel E / h_C
+    double       proximal        = 1e-3; // chi_rel: chi = chi_rel E / L^2
+    double       uzawa_tolerance = 1e-8;
+    unsigned int max_uzawa_steps = 500;
     // loop 3: semi-smooth Newton
     double       newton_tolerance_factor   = 1e-2;
     double       initial_inner_tolerance   = 1e-2;
@@ -188,8 +189,8 @@ namespace dualcontact
   /** What is written where. */
   struct OutputParameters
   {
-    std::string directory = "output";
-    bool        write_vtu = true;
+    std::string directory    = "output";
+    bool        write_vtu    = true;
     bool        print_timing = true;
 
     static void

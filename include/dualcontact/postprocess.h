@@ -50,9 +50,9 @@ namespace dualcontact
   /** The norms of u - u_exact (or of u itself without an exact solution). */
   struct ErrorNorms
   {
-    double l2 = 0.;       // ||u - u_exact||_L2
-    double h1_semi = 0.;  // |u - u_exact|_H1
-    double u_l2 = 0.;     // ||u||_L2
+    double l2      = 0.; // ||u - u_exact||_L2
+    double h1_semi = 0.; // |u - u_exact|_H1
+    double u_l2    = 0.; // ||u||_L2
   };
 
   /**

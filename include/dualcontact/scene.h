@@ -92,7 +92,8 @@ namespace dualcontact
       return exact_.get();
     }
 
-    /** Foundation: a point on its boundary and the unit normal into the body. */
+    /** Foundation: a point on its boundary and the unit normal into the body.
+     */
     Point<dim>     foundation_point;
     Tensor<1, dim> foundation_normal;
 
@@ -116,13 +117,13 @@ namespace dualcontact
     const Parameters &parameters;
 
   private:
-    Effects effects_;
+    Effects                                                      effects_;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> displacements;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> tractions;
     std::unique_ptr<Function<dim>>                               body_force_;
     std::unique_ptr<Function<dim>>                               exact_;
-    std::unique_ptr<Function<dim>>                               exact_pressure_;
-    Functions::ZeroFunction<dim> zero{dim};
+    std::unique_ptr<Function<dim>> exact_pressure_;
+    Functions::ZeroFunction<dim>   zero{dim};
   };
 } // namespace dualcontact
 

@@ -58,16 +58,16 @@ namespace dualcontact
   /** Totals of one call of UzawaSolver::solve. */
   struct ContactStatistics
   {
-    unsigned int uzawa_steps   = 0;
-    unsigned int newton_steps  = 0;
-    unsigned int cg_iterations = 0;
-    unsigned int amg_setups    = 0;
-    types::global_dof_index n_active = 0;
+    unsigned int            uzawa_steps   = 0;
+    unsigned int            newton_steps  = 0;
+    unsigned int            cg_iterations = 0;
+    unsigned int            amg_setups    = 0;
+    types::global_dof_index n_active      = 0;
     // The last relative change of l1 understates its error: with the
     // observed contraction rate rho = d_k / d_{k-1} the remaining error is
     // about d_k rho / (1 - rho) (DESIGN.md §3).
-    double       rate               = 0.;
-    double       estimated_l1_error = 0.;
+    double rate               = 0.;
+    double estimated_l1_error = 0.;
   };
 
   template <int dim>
@@ -145,7 +145,7 @@ namespace dualcontact
     // it had when its AMG preconditioner was last built
     TrilinosWrappers::SparseMatrix newton_matrix;
     std::vector<bool>              amg_active_set;
-    bool                           amg_valid = false;
+    bool                           amg_valid                 = false;
     unsigned int                   cg_iterations_after_setup = 0;
     unsigned int                   last_cg_iterations        = 0;
   };

@@ -33,15 +33,16 @@ namespace
     Run(const std::string &scene,
         const std::string &overrides,
         const MPI_Comm     comm = MPI_COMM_WORLD)
-      : comm(comm)
+        : comm(comm)
     {
       static unsigned int counter = 0;
-      directory = temporary_directory("contact" + std::to_string(counter++), comm);
-      parameters.read_string(read_text(test_file("../prm/" + scene)) + overrides +
-                             "\nsubsection Output\n  set Directory = " +
-                             directory +
-                             "\n  set Write vtu = false\n  set Print timing = "
-                             "false\nend\n");
+      directory =
+        temporary_directory("contact" + std::to_string(counter++), comm);
+      parameters.read_string(
+        read_text(test_file("../prm/" + scene)) + overrides +
+        "\nsubsection Output\n  set Directory = " + directory +
+        "\n  set Write vtu = false\n  set Print timing = "
+        "false\nend\n");
       problem = std::make_unique<ContactProblem<2>>(parameters, comm, screen);
       problem->run();
     }
@@ -77,7 +78,7 @@ namespace
   double
   max_pressure_difference(const std::vector<std::pair<double, double>> &a,
                           const std::vector<std::pair<double, double>> &b,
-                          unsigned int                                 &n_matched)
+                          unsigned int &n_matched)
   {
     double difference = 0;
     n_matched         = 0;
@@ -110,11 +111,12 @@ namespace
   const double hertz_P  = 2 * 4.315374524161804;
 } // namespace
 
-TEST_CASE("Patch test: every nodal contact pressure equals the applied pressure",
-          "[contact]")
+TEST_CASE(
+  "Patch test: every nodal contact pressure equals the applied pressure",
+  "[contact]")
 {
-  Run run("patch.prm", "");
-  const ContactSet<2> &contact = run.problem->contact();
+  Run                  run("patch.prm", "");
+  const ContactSet<2> &contact   = run.problem->contact();
   double               deviation = 0;
   for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
     deviation = std::max(deviation, std::abs(contact.l1[s] - 1.));
@@ -131,7 +133,7 @@ TEST_CASE("Patch test: every nodal contact pressure equals the applied pressure"
 TEST_CASE("Hertz: peak pressure, half-width, pressure error and total force",
           "[contact]")
 {
-  Run run("hertz.prm", "");
+  Run         run("hertz.prm", "");
   const auto &results = run.problem->results();
   REQUIRE(results.size() == 2);
 
@@ -157,12 +159,12 @@ TEST_CASE("Semi-coercive half disc and symmetric quarter disc give the same "
 {
   // Nothing holds the half disc sideways but the proximal term; the quarter
   // disc has u_x = 0 on the symmetry line. Their meshes coincide on x >= 0.
-  Run half("hertz.prm", one_cycle);
-  Run quarter("hertz.prm",
+  Run          half("hertz.prm", one_cycle);
+  Run          quarter("hertz.prm",
               one_cycle +
                 "\nsubsection Geometry\n  set Type = quarter disc\nend\n"
-                "subsection Boundary conditions\n  set Conditions = 0: "
-                "contact, 1: traction, 2: normal fixed\nend\n");
+                         "subsection Boundary conditions\n  set Conditions = 0: "
+                         "contact, 1: traction, 2: normal fixed\nend\n");
   unsigned int n_matched = 0;
   const double difference =
     max_pressure_difference(quarter.pressures(), half.pressures(), n_matched);
@@ -172,19 +174,20 @@ TEST_CASE("Semi-coercive half disc and symmetric quarter disc give the same "
   CHECK(std::abs(2 * quarter.last().contact_force - hertz_P) <= 1e-6 * hertz_P);
 }
 
-TEST_CASE("The augmentation parameter over four decades gives the same solution",
-          "[contact]")
+TEST_CASE(
+  "The augmentation parameter over four decades gives the same solution",
+  "[contact]")
 {
-  Run reference("hertz.prm", one_cycle);
-  const auto   p_reference = reference.pressures();
+  Run                reference("hertz.prm", one_cycle);
+  const auto         p_reference = reference.pressures();
   std::ostringstream table;
   table << "r_rel  Uzawa  Newton  CG\n";
   for (const double r_rel : {0.1, 1., 10., 100., 1000.})
     {
-      Run run("hertz.prm",
-              one_cycle +
-                solver("  set Augmentation parameter = " + std::to_string(r_rel) +
-                       "\n  set Maximum Uzawa steps = 2000"));
+      Run          run("hertz.prm",
+              one_cycle + solver("  set Augmentation parameter = " +
+                                 std::to_string(r_rel) +
+                                 "\n  set Maximum Uzawa steps = 2000"));
       unsigned int n_matched = 0;
       const double difference =
         max_pressure_difference(run.pressures(), p_reference, n_matched);
@@ -202,8 +205,8 @@ TEST_CASE("The augmentation parameter over four decades gives the same solution"
 
 TEST_CASE("One and several MPI ranks give the same pressures", "[contact][mpi]")
 {
-  Run world("hertz.prm", one_cycle);
-  Run alone("hertz.prm", one_cycle, MPI_COMM_SELF);
+  Run          world("hertz.prm", one_cycle);
+  Run          alone("hertz.prm", one_cycle, MPI_COMM_SELF);
   unsigned int n_matched = 0;
   double       difference =
     max_pressure_difference(world.pressures(), alone.pressures(), n_matched);
@@ -222,17 +225,17 @@ TEST_CASE("The same scene in N-mm-MPa and in N-m-Pa: same iterations, same "
 {
   // prm/hertz.prm read as N-mm-MPa (R = 1 mm, E = 1000 MPa), and the same
   // scene in N-m-Pa: lengths times 1e-3, stresses times 1e6.
-  Run mm("hertz.prm", one_cycle);
-  Run m("hertz.prm",
+  Run                mm("hertz.prm", one_cycle);
+  Run                m("hertz.prm",
         one_cycle +
           "\nsubsection Geometry\n  set Radius = 1e-3\n"
-          "  set Pre-refinement distance = 5e-5\nend\n"
-          "subsection Material\n  set Young's modulus = 1e9\nend\n"
-          "subsection Boundary conditions\n"
-          "  set Tractions = 1: 0; -4.315374524161804e6\nend\n"
-          "subsection Foundation\n  set Point = 0, -1e-3\nend\n"
-          "subsection Exact solution\n  set Contact pressure = "
-          "54.94505494505495e6 * sqrt(max(0, 1 - x^2 / 1e-8))\nend\n");
+                         "  set Pre-refinement distance = 5e-5\nend\n"
+                         "subsection Material\n  set Young's modulus = 1e9\nend\n"
+                         "subsection Boundary conditions\n"
+                         "  set Tractions = 1: 0; -4.315374524161804e6\nend\n"
+                         "subsection Foundation\n  set Point = 0, -1e-3\nend\n"
+                         "subsection Exact solution\n  set Contact pressure = "
+                         "54.94505494505495e6 * sqrt(max(0, 1 - x^2 / 1e-8))\nend\n");
   const CycleResult &a = mm.last(), &b = m.last();
   CHECK(a.n_dofs == b.n_dofs);
   CHECK(a.uzawa_steps == b.uzawa_steps);

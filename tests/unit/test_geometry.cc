@@ -45,7 +45,7 @@ TEST_CASE("The rectangle's boundary ids 0..3 are x_min, x_max, y_min, y_max",
                                      "subsection Refinement\n"
                                      "  set Initial global refinement = 2\n"
                                      "end\n");
-  const Scene<2>                          scene(parameters);
+  const Scene<2>   scene(parameters);
   parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
   scene.create_mesh(triangulation);
 
@@ -67,7 +67,7 @@ TEST_CASE("The rectangle's boundary ids 0..3 are x_min, x_max, y_min, y_max",
               }
             ++n_faces[id];
             length[id] += face->measure();
-            const Point<2> c = face->center();
+            const Point<2> c           = face->center();
             const double   distance[4] = {std::abs(c[0] + 1.),
                                           std::abs(c[0] - 3.),
                                           std::abs(c[1] - 2.),
@@ -99,8 +99,9 @@ TEST_CASE("The half disc has the area pi R^2/2 to 1e-3 after 4 refinements, "
   // stay at the coarse mesh's deficit).
   const auto deficit = [](const unsigned int n_refinements) {
     const Parameters parameters =
-      read(half_disc + "subsection Refinement\n"
-                       "  set Initial global refinement = " +
+      read(half_disc +
+           "subsection Refinement\n"
+           "  set Initial global refinement = " +
            std::to_string(n_refinements) + "\nend\n");
     const Scene<2>                          scene(parameters);
     parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
@@ -126,9 +127,9 @@ TEST_CASE("The half disc has the area pi R^2/2 to 1e-3 after 4 refinements, "
 TEST_CASE("The half disc's id 0 is the lower half circle, id 1 the flat top",
           "[geometry][mpi]")
 {
-  const Parameters parameters = read(
-    half_disc +
-    "subsection Refinement\n  set Initial global refinement = 4\nend\n");
+  const Parameters parameters =
+    read(half_disc +
+         "subsection Refinement\n  set Initial global refinement = 4\nend\n");
   const Scene<2>                          scene(parameters);
   parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
   scene.create_mesh(triangulation);
@@ -193,30 +194,30 @@ namespace
   {
     // the foundation touches the half disc at its lowest point (1, 1.5);
     // cells within 0.1 R of it are pre-refined
-    const Parameters parameters =
-      read(half_disc + "subsection Boundary conditions\n"
-                       "  set Conditions = 0: contact\n"
-                       "end\n"
-                       "subsection Foundation\n"
-                       "  set Point = 1, 1.5\n"
-                       "  set Normal = 0, 1\n"
-                       "end\n"
-                       "subsection Geometry\n"
-                       "  set Pre-refinement steps = " +
-           std::to_string(pre_refinement_steps) +
-           "\n"
-           "  set Pre-refinement distance = 0.05\n"
-           "end\n"
-           "subsection Refinement\n"
-           "  set Initial global refinement = 2\n"
-           "end\n");
+    const Parameters                        parameters = read(half_disc +
+                                       "subsection Boundary conditions\n"
+                                                              "  set Conditions = 0: contact\n"
+                                                              "end\n"
+                                                              "subsection Foundation\n"
+                                                              "  set Point = 1, 1.5\n"
+                                                              "  set Normal = 0, 1\n"
+                                                              "end\n"
+                                                              "subsection Geometry\n"
+                                                              "  set Pre-refinement steps = " +
+                                       std::to_string(pre_refinement_steps) +
+                                       "\n"
+                                                              "  set Pre-refinement distance = 0.05\n"
+                                                              "end\n"
+                                                              "subsection Refinement\n"
+                                                              "  set Initial global refinement = 2\n"
+                                                              "end\n");
     const Scene<2>                          scene(parameters);
     parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
     scene.create_mesh(triangulation);
 
     const Point<2> bottom(1., 1.5);
-    double         smallest = std::numeric_limits<double>::max();
-    double         largest  = 0;
+    double         smallest    = std::numeric_limits<double>::max();
+    double         largest     = 0;
     unsigned int   n_at_bottom = 0, finest = 0;
     unsigned int   coarsest_at_top = std::numeric_limits<unsigned int>::max();
     for (const auto &cell : triangulation.active_cell_iterators())

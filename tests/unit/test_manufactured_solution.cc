@@ -115,12 +115,14 @@ TEST_CASE("Manufactured solution: every rank alone and all ranks together "
       INFO("cycle " << k);
       CHECK(alone[k].n_dofs == together[k].n_dofs);
       // the largest difference over the ranks, so all ranks check the same
-      const double l2 = Utilities::MPI::max(
-        relative_difference(alone[k].l2_error, together[k].l2_error),
-        MPI_COMM_WORLD);
-      const double h1 = Utilities::MPI::max(
-        relative_difference(alone[k].h1_error, together[k].h1_error),
-        MPI_COMM_WORLD);
+      const double l2 =
+        Utilities::MPI::max(relative_difference(alone[k].l2_error,
+                                                together[k].l2_error),
+                            MPI_COMM_WORLD);
+      const double h1 =
+        Utilities::MPI::max(relative_difference(alone[k].h1_error,
+                                                together[k].h1_error),
+                            MPI_COMM_WORLD);
       const double u = Utilities::MPI::max(
         relative_difference(alone[k].u_l2, together[k].u_l2), MPI_COMM_WORLD);
       INFO("relative differences: L2 error " << l2 << ", H1 error " << h1

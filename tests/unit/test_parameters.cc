@@ -153,10 +153,10 @@ TEST_CASE("A boundary id listed twice in Conditions is rejected with "
           "exit_inconsistent",
           "[parameters][errors]")
 {
-  const CaughtError error = error_reading(
-    "subsection Boundary conditions\n"
-    "  set Conditions = 0: fixed, 2: fixed, 2: free\n"
-    "end\n");
+  const CaughtError error =
+    error_reading("subsection Boundary conditions\n"
+                  "  set Conditions = 0: fixed, 2: fixed, 2: free\n"
+                  "end\n");
   REQUIRE(error.thrown);
   CHECK(error.code == exit_inconsistent);
   CHECK(contains(error.message, "Conditions"));
@@ -227,11 +227,10 @@ TEST_CASE("An expression that does not parse is rejected when the scene is "
   CHECK(error.code == exit_invalid_value);
   CHECK(contains(error.message, "Body force"));
 
-  error = error_building_scene(
-    "subsection Boundary conditions\n"
-    "  set Conditions = 2: fixed, 3: traction\n"
-    "  set Tractions = 3: 0; -unknown_constant\n"
-    "end\n");
+  error = error_building_scene("subsection Boundary conditions\n"
+                               "  set Conditions = 2: fixed, 3: traction\n"
+                               "  set Tractions = 3: 0; -unknown_constant\n"
+                               "end\n");
   REQUIRE(error.thrown);
   CHECK(error.code == exit_invalid_value);
   CHECK(contains(error.message, "Tractions"));

@@ -56,8 +56,7 @@ namespace
     const Scene<2>                          scene(parameters);
     parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
     scene.create_mesh(triangulation);
-    return catch_input_error(
-      [&] { scene.check_rigid_motions(triangulation); });
+    return catch_input_error([&] { scene.check_rigid_motions(triangulation); });
   }
 } // namespace
 
@@ -121,9 +120,9 @@ TEST_CASE("The rigid-body modes lie in the kernel of the unconstrained "
   parallel::distributed::Triangulation<2> triangulation(comm);
   scene.create_mesh(triangulation);
 
-  const MappingQ<2>  mapping(1);
-  const FESystem<2>  fe(FE_Q<2>(1), 2);
-  DoFHandler<2>      dof_handler(triangulation);
+  const MappingQ<2> mapping(1);
+  const FESystem<2> fe(FE_Q<2>(1), 2);
+  DoFHandler<2>     dof_handler(triangulation);
   dof_handler.distribute_dofs(fe);
   const IndexSet locally_owned = dof_handler.locally_owned_dofs();
   IndexSet       locally_relevant;

@@ -20,9 +20,9 @@ namespace dualcontact_test
   /** What an InputError said: its code and its what() text. */
   struct CaughtError
   {
-    bool                     thrown = false;
-    dualcontact::ExitCode    code   = dualcontact::exit_success;
-    std::string              message;
+    bool                  thrown = false;
+    dualcontact::ExitCode code   = dualcontact::exit_success;
+    std::string           message;
   };
 
   /** Run `action` and catch the InputError it throws, if any. */
