@@ -48,13 +48,8 @@ namespace dualcontact
                      elastic_solver,
                      pcout,
                      parameters.output.print_timing)
-  {
-    if (parameters.friction.law != FrictionLaw::none)
-      throw InputError("The entry <Friction/Law> asks for friction, which this "
-                       "version of dualcontact does not implement yet; use "
-                       "'none'.",
-                       exit_invalid_value);
-  }
+      , friction_iteration(parameters.friction, uzawa_solver, pcout)
+  {}
 
   template <int dim>
   void
@@ -228,7 +223,7 @@ namespace dualcontact
                                result.chi};
     const std::size_t       first = iteration_log.size();
     const ContactStatistics statistics =
-      uzawa_solver.solve(system, contact_set, v, iteration_log);
+      friction_iteration.solve(system, contact_set, v, iteration_log);
     for (std::size_t i = first; i < iteration_log.size(); ++i)
       iteration_log[i].cycle = result.cycle;
 
@@ -243,6 +238,9 @@ namespace dualcontact
     result.uzawa_rate        = statistics.rate;
     result.l1_error_estimate = statistics.estimated_l1_error;
     result.n_active          = statistics.n_active;
+    result.n_stick           = statistics.n_stick;
+    result.n_slip            = statistics.n_slip;
+    result.friction_steps    = statistics.friction_steps;
 
     // Figures of the contact zone: total force, peak pressure, half-width
     // along t, and the error against an exact pressure (nodal quadrature).
@@ -270,9 +268,15 @@ namespace dualcontact
           }
       }
     result.contact_force = Utilities::MPI::sum(force, mpi_communicator);
-    result.max_pressure  = Utilities::MPI::max(peak, mpi_communicator);
-    t_min                = Utilities::MPI::min(t_min, mpi_communicator);
-    t_max                = Utilities::MPI::max(t_max, mpi_communicator);
+    Tensor<1, dim - 1> tangential;
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      tangential += contact_set.nodes[s].weight * contact_set.l2[s];
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      tangential[k] = Utilities::MPI::sum(tangential[k], mpi_communicator);
+    result.tangential_force = tangential.norm();
+    result.max_pressure     = Utilities::MPI::max(peak, mpi_communicator);
+    t_min                   = Utilities::MPI::min(t_min, mpi_communicator);
+    t_max                   = Utilities::MPI::max(t_max, mpi_communicator);
     if (dim == 2 && t_max >= t_min)
       result.contact_half_width = 0.5 * (t_max - t_min);
     if (exact != nullptr)
@@ -324,18 +328,20 @@ namespace dualcontact
     data_out.add_data_vector(subdomain, "subdomain");
 
     // Nodal fields on Gamma_C, on a scalar copy of the element: contact
-    // pressure l1, gap g0 - u_n, and status (-1 not a contact node,
-    // 0 separated, 1 in contact). Zero away from Gamma_C.
+    // pressure l1, gap g0 - u_n, status (-1 not a contact node, 0 separated,
+    // 1 in contact and sticking, 2 slipping), tangential traction l2,
+    // friction threshold g, tangential slip u_t (2D: along t; 3D: their
+    // magnitudes). Zero away from Gamma_C.
     DoFHandler<dim> scalar_dof_handler(triangulation);
     const FE_Q<dim> scalar_fe(fe.degree);
-    std::array<TrilinosWrappers::MPI::Vector, 3> contact_fields;
+    std::array<TrilinosWrappers::MPI::Vector, 6> contact_fields;
     if (scene.effects().contact)
       {
         scalar_dof_handler.distribute_dofs(scalar_fe);
         const IndexSet owned = scalar_dof_handler.locally_owned_dofs();
         IndexSet       relevant;
         DoFTools::extract_locally_relevant_dofs(scalar_dof_handler, relevant);
-        std::array<TrilinosWrappers::MPI::Vector, 3> owned_fields;
+        std::array<TrilinosWrappers::MPI::Vector, 6> owned_fields;
         for (auto &f : owned_fields)
           f.reinit(owned, mpi_communicator);
         owned_fields[2] = -1.;
@@ -369,11 +375,23 @@ namespace dualcontact
                   owned_fields[1][scalar_dofs[i]] =
                     contact_set.nodes[s].gap0 -
                     contact_set.normal_displacement(solution, s);
-                  owned_fields[2][scalar_dofs[i]] = l1 > 0. ? 1. : 0.;
+                  owned_fields[2][scalar_dofs[i]] = contact_set.status(s);
+                  const Tensor<1, dim - 1> vt =
+                    contact_set.tangential_displacement(solution, s);
+                  owned_fields[3][scalar_dofs[i]] =
+                    dim == 2 ? contact_set.l2[s][0] : contact_set.l2[s].norm();
+                  owned_fields[4][scalar_dofs[i]] = contact_set.threshold[s];
+                  owned_fields[5][scalar_dofs[i]] =
+                    dim == 2 ? vt[0] : vt.norm();
                 }
             }
-        const char *names[] = {"contact_pressure", "gap", "contact_status"};
-        for (unsigned int f = 0; f < 3; ++f)
+        const char *names[] = {"contact_pressure",
+                               "gap",
+                               "contact_status",
+                               "tangential_traction",
+                               "friction_threshold",
+                               "tangential_slip"};
+        for (unsigned int f = 0; f < owned_fields.size(); ++f)
           {
             owned_fields[f].compress(VectorOperation::insert);
             contact_fields[f].reinit(owned, relevant, mpi_communicator);
@@ -412,7 +430,8 @@ namespace dualcontact
            "newton_steps,linear_iterations,amg_setups,contact_force,"
            "max_pressure,contact_half_width,pressure_error,u_l2,"
            "l2_error,h1_error,l2_rate,h1_rate,time_setup,time_assembly,"
-           "time_solve,time_output,time_reference,memory_mb\n";
+           "time_solve,time_output,time_reference,memory_mb,"
+           "friction_steps,stick_nodes,slip_nodes,tangential_force\n";
     csv << std::setprecision(10);
     for (const CycleResult &r : cycle_results)
       csv << r.cycle << ',' << r.n_cells << ',' << r.n_dofs << ','
@@ -423,7 +442,9 @@ namespace dualcontact
           << r.u_l2 << ',' << r.l2_error << ',' << r.h1_error << ','
           << r.l2_rate << ',' << r.h1_rate << ',' << r.time_setup << ','
           << r.time_assembly << ',' << r.time_solve << ',' << r.time_output
-          << ',' << r.time_reference << ',' << r.memory_mb << '\n';
+          << ',' << r.time_reference << ',' << r.memory_mb << ','
+          << r.friction_steps << ',' << r.n_stick << ',' << r.n_slip << ','
+          << r.tangential_force << '\n';
   }
 
   template <int dim>
@@ -435,15 +456,18 @@ namespace dualcontact
       return;
     std::ofstream csv(parameters.output.directory + "/iterations.csv");
     csv << "cycle,loop,uzawa_step,newton_step,newton_steps,cg_iterations,"
-           "amg_setups,n_active,gradient,step_length,change_l1,change_v,"
-           "violation,complementarity,time\n";
+           "amg_setups,n_active,n_stick,n_slip,gradient,step_length,"
+           "change_l1,change_l2,change_g,change_v,violation,complementarity,"
+           "time\n";
     csv << std::setprecision(8);
     for (const IterationRecord &r : iteration_log)
       csv << r.cycle << ',' << r.loop << ',' << r.uzawa_step << ',' << r.index
           << ',' << r.newton_steps << ',' << r.cg_iterations << ','
-          << r.amg_setups << ',' << r.n_active << ',' << r.gradient << ','
-          << r.step_length << ',' << r.change_l1 << ',' << r.change_v << ','
-          << r.violation << ',' << r.complementarity << ',' << r.time << '\n';
+          << r.amg_setups << ',' << r.n_active << ',' << r.n_stick << ','
+          << r.n_slip << ',' << r.gradient << ',' << r.step_length << ','
+          << r.change_l1 << ',' << r.change_l2 << ',' << r.change_g << ','
+          << r.change_v << ',' << r.violation << ',' << r.complementarity << ','
+          << r.time << '\n';
   }
 
   template <int dim>
@@ -463,9 +487,6 @@ namespace dualcontact
       make_grid();
     }
     print_header();
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::filesystem::create_directories(parameters.output.directory);
-    MPI_Barrier(mpi_communicator);
 
     const bool timing = parameters.output.print_timing;
     const auto timed  = [&](const char *name, const auto &phase) {
@@ -514,6 +535,14 @@ namespace dualcontact
                 << result.contact_half_width;
         if (scene.exact_pressure() != nullptr)
           pcout << ", pressure error (rel. L2) " << result.pressure_error;
+        if (scene.effects().friction != FrictionLaw::none)
+          pcout << "\n   friction: " << result.n_stick << " stick, "
+                << result.n_slip << " slip nodes, total tangential force "
+                << result.tangential_force
+                << (result.friction_steps > 0 ?
+                      ", " + std::to_string(result.friction_steps) +
+                        " threshold (loop 1) steps" :
+                      std::string());
         if (scene.effects().contact)
           pcout << std::scientific << std::setprecision(2)
                 << "\n   Uzawa contraction rate " << result.uzawa_rate
@@ -550,6 +579,14 @@ namespace dualcontact
                 << ", H1 = " << result.h1_error;
         pcout << std::defaultfloat << '\n';
 
+        // The output folder is made only now: a run that fails on its first
+        // mesh (bad input found late, no equilibrium) writes nothing.
+        if (cycle == 0)
+          {
+            if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+              std::filesystem::create_directories(parameters.output.directory);
+            MPI_Barrier(mpi_communicator);
+          }
         result.time_output = timed("output", [&] { output_results(cycle); });
         write_cycle_table();
         write_iteration_table();

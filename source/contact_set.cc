@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <dualcontact/contact_set.h>
+#include <dualcontact/input_error.h>
 
 #include <map>
 
@@ -24,13 +25,22 @@ namespace dualcontact
     const IndexSet           &owned = dof_handler.locally_owned_dofs();
     const auto contact_ids = scene.ids_with(BoundaryCondition::contact);
 
-    normal  = -scene.foundation_normal;
-    tangent = Tensor<1, dim>();
-    if (dim == 2)
+    normal = -scene.foundation_normal;
+    // an orthonormal tangent basis: 2D t = (-n_2, n_1); 3D by Gram-Schmidt
+    if constexpr (dim == 2)
       {
-        tangent[0] = -normal[1];
-        tangent[1] = normal[0];
+        tangents[0][0] = -normal[1];
+        tangents[0][1] = normal[0];
       }
+    else
+      {
+        Tensor<1, dim> e;
+        e[std::abs(normal[0]) < 0.9 ? 0 : 1] = 1.;
+        Tensor<1, dim> t1                    = e - (e * normal) * normal;
+        tangents[0]                          = t1 / t1.norm();
+        tangents[1] = cross_product_3d(normal, tangents[0]);
+      }
+    tangent = tangents[0];
 
     // Weights m_s = int_{Gamma_C} phi_s, with the weight of hanging nodes
     // handed to their masters. Every component carries the same weight.
@@ -100,6 +110,30 @@ namespace dualcontact
       }
 
     l1.assign(nodes.size(), 0.);
+
+    // Friction data at the nodes: F (Coulomb) or g (given), never negative.
+    const FrictionLaw law = scene.effects().friction;
+    friction              = law != FrictionLaw::none;
+    l2.assign(nodes.size(), Tensor<1, dim - 1>());
+    threshold.assign(nodes.size(), 0.);
+    coefficient.assign(nodes.size(), 0.);
+    if (friction)
+      {
+        const bool coulomb  = law == FrictionLaw::coulomb;
+        double     smallest = 0.;
+        for (unsigned int s = 0; s < nodes.size(); ++s)
+          {
+            const double value =
+              scene.friction_function()->value(nodes[s].position);
+            smallest                               = std::min(smallest, value);
+            (coulomb ? coefficient : threshold)[s] = value;
+          }
+        if (Utilities::MPI::min(smallest, comm) < 0.)
+          throw InputError(std::string("The entry <Friction/") +
+                             (coulomb ? "Coefficient" : "Threshold") +
+                             "> is negative at some contact node.",
+                           exit_invalid_value);
+      }
     n_global = Utilities::MPI::sum<types::global_dof_index>(nodes.size(), comm);
     h_min_   = Utilities::MPI::min(h_min, comm);
     double local_measure = 0;

@@ -468,6 +468,29 @@ namespace dualcontact
                       Patterns::Anything(),
                       "Given friction threshold g [stress], >= 0: a number or "
                       "an expression in x, y (z).");
+    prm.declare_entry(
+      "Threshold iteration",
+      "merged",
+      Patterns::Selection("nested|merged"),
+      "Coulomb only, loop 1: 'nested' solves the given-friction problem with "
+      "the threshold g fixed, then sets g = F l1, until g settles "
+      "(successive approximations); 'merged' sets g = F l1 after every Uzawa "
+      "step (one loop). Both give the same solution within the tolerances.");
+    prm.declare_entry("Initial threshold",
+                      "zero",
+                      Patterns::Selection("zero|frictionless"),
+                      "Coulomb only: g^0 = 0, or g^0 = F times the contact "
+                      "pressure of the frictionless problem (solved first).");
+    prm.declare_entry("Threshold tolerance",
+                      "1e-6",
+                      Patterns::Double(1e-14, 1.),
+                      "Coulomb only: loop 1 stops when |g_new - g| <= tol "
+                      "|g_new| (nodal Euclidean norms) [-].");
+    prm.declare_entry("Maximum threshold steps",
+                      "100",
+                      Patterns::Integer(1),
+                      "Coulomb only: loop 1 gives up (with an error naming "
+                      "the cause) after this many steps [-].");
     prm.leave_subsection();
   }
 
@@ -481,6 +504,14 @@ namespace dualcontact
                                                FrictionLaw::coulomb;
     coefficient            = prm.get("Coefficient");
     threshold              = prm.get("Threshold");
+    strategy               = prm.get("Threshold iteration") == "nested" ?
+                               FrictionStrategy::nested :
+                               FrictionStrategy::merged;
+    initial_threshold      = prm.get("Initial threshold") == "zero" ?
+                               InitialThreshold::zero :
+                               InitialThreshold::frictionless;
+    tolerance              = prm.get_double("Threshold tolerance");
+    max_steps              = prm.get_integer("Maximum threshold steps");
     prm.leave_subsection();
   }
 

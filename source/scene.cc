@@ -101,12 +101,14 @@ namespace dualcontact
                       "no: one linear elasticity solve per mesh")
         << '\n'
         << "  friction                    : "
-        << (!contact ? "no (no contact)" :
-            friction == FrictionLaw::none ?
-                       "no" :
-            friction == FrictionLaw::given ?
-                       "given threshold (Tresca)" :
-                       "Coulomb (successive approximations)")
+        << (!contact      ? "no (no contact)" :
+            zero_friction ? "no: the coefficient/threshold is zero, the "
+                            "frictionless path runs" :
+            friction == FrictionLaw::none  ? "no" :
+            friction == FrictionLaw::given ? "given threshold (Tresca): "
+                                             "Uzawa on l1 and l2" :
+                                             "Coulomb: threshold iteration "
+                                             "(loop 1) around Uzawa on l1, l2")
         << '\n'
         << "  body force                  : "
         << (body_force ? "yes" : "no (not assembled)") << '\n'
@@ -173,8 +175,28 @@ namespace dualcontact
     if (foundation_normal.norm() > 0)
       foundation_normal /= foundation_normal.norm();
 
-    effects_.contact    = !ids_with(BoundaryCondition::contact).empty();
-    effects_.friction   = parameters.friction.law;
+    effects_.contact  = !ids_with(BoundaryCondition::contact).empty();
+    effects_.friction = parameters.friction.law;
+    if (effects_.contact && parameters.friction.law != FrictionLaw::none)
+      {
+        const bool coulomb = parameters.friction.law == FrictionLaw::coulomb;
+        const std::string expression = coulomb ?
+                                         parameters.friction.coefficient :
+                                         parameters.friction.threshold;
+        const std::string entry =
+          coulomb ? "Friction/Coefficient" : "Friction/Threshold";
+        friction_ = make_function<dim>(expression, 1, material, entry, length);
+        if (is_zero_expression(expression))
+          {
+            effects_.zero_friction = true;
+            effects_.friction      = FrictionLaw::none;
+            friction_.reset();
+          }
+        else if (friction_->value(center()) < 0. &&
+                 expression.find_first_of("xyz") == std::string::npos)
+          throw InputError("The entry <" + entry + "> must not be negative.",
+                           exit_invalid_value);
+      }
     effects_.body_force = body_force_ != nullptr;
     effects_.tractions  = !tractions.empty();
   }

@@ -29,6 +29,52 @@ namespace dualcontact
     {
       return x > 0. ? x : 0.;
     }
+
+    // Projection onto the disc of radius g (an interval in 2D).
+    template <int n>
+    Tensor<1, n>
+    project(const Tensor<1, n> &y, const double g)
+    {
+      const double norm = y.norm();
+      return norm <= g ? y : (g / norm) * y;
+    }
+
+    // psi_g(y) = |y|^2/2 for |y| <= g, g|y| - g^2/2 beyond: C^1, convex,
+    // with gradient project(y, g) (the tangential part of DESIGN.md §2).
+    template <int n>
+    double
+    huber(const Tensor<1, n> &y, const double g)
+    {
+      const double norm = y.norm();
+      return norm <= g ? 0.5 * norm * norm : g * norm - 0.5 * g * g;
+    }
+
+    // d . D(y) d, D the derivative of project(., g) at y: the identity when
+    // sticking (|y| < g), (g/|y|)(I - y y^T/|y|^2) when slipping.
+    template <int n>
+    double
+    huber_curvature(const Tensor<1, n> &y,
+                    const double        g,
+                    const Tensor<1, n> &d)
+    {
+      const double norm = y.norm();
+      if (norm < g)
+        return d * d;
+      if (norm == 0.)
+        return 0.;
+      const double along = (d * y) / norm;
+      return g / norm * (d * d - along * along);
+    }
+
+    // Status of a contact node for the AMG-reuse test and the output:
+    // 0 separated, 1 in contact and sticking, 2 in contact and slipping.
+    unsigned char
+    node_status(const double z, const bool friction, const bool stick)
+    {
+      if (z < 0.)
+        return 0;
+      return (!friction || stick) ? 1 : 2;
+    }
   } // namespace
 
   template <int dim>
@@ -44,40 +90,75 @@ namespace dualcontact
 
   template <int dim>
   void
-  UzawaSolver<dim>::augmented_pressures(const ContactSet<dim> &contact,
-                                        const TrilinosWrappers::MPI::Vector &v,
-                                        const double                         r,
-                                        std::vector<double> &z) const
+  UzawaSolver<dim>::nodal_state(const ContactSet<dim>               &contact,
+                                const TrilinosWrappers::MPI::Vector &v,
+                                const double                         r,
+                                std::vector<double>                 &z,
+                                std::vector<Tensor<1, dim - 1>>     &y) const
   {
-    z.resize(contact.n_local_nodes());
-    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
-      z[s] = contact.l1[s] +
-             r * (contact.normal_displacement(v, s) - contact.nodes[s].gap0);
+    const unsigned int n_nodes = contact.n_local_nodes();
+    z.resize(n_nodes);
+    y.resize(n_nodes);
+    for (unsigned int s = 0; s < n_nodes; ++s)
+      {
+        z[s] = contact.l1[s] +
+               r * (contact.normal_displacement(v, s) - contact.nodes[s].gap0);
+        if (contact.friction)
+          y[s] = contact.l2[s] + r * contact.tangential_displacement(v, s);
+      }
   }
 
   template <int dim>
   void
-  UzawaSolver<dim>::assemble_newton_matrix(const ContactSystem     &system,
-                                           const ContactSet<dim>   &contact,
-                                           const std::vector<bool> &active)
+  UzawaSolver<dim>::assemble_newton_matrix(
+    const ContactSystem                   &system,
+    const ContactSet<dim>                 &contact,
+    const std::vector<double>             &z,
+    const std::vector<Tensor<1, dim - 1>> &y)
   {
     const Tensor<1, dim>                &n = contact.normal;
     FullMatrix<double>                   local_matrix(dim, dim);
     std::vector<types::global_dof_index> local_dofs(dim);
     newton_matrix.copy_from(system.stiffness);
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
-      if (active[s])
-        {
+      {
+        const double m_r = contact.nodes[s].weight * system.r;
+        local_matrix     = 0;
+        // normal part, where z >= 0 (at z = 0 the generalised derivative may
+        // take either branch; the active one spares a free fall)
+        if (z[s] >= 0.)
           for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              local_matrix(a, b) += m_r * n[a] * n[b];
+        // tangential part: T D(y) T^T, column by column
+        if (contact.friction)
+          for (unsigned int b = 0; b < dim; ++b)
             {
-              local_dofs[a] = contact.nodes[s].dofs[a];
-              for (unsigned int b = 0; b < dim; ++b)
-                local_matrix(a, b) =
-                  contact.nodes[s].weight * system.r * n[a] * n[b];
+              // e_b in the tangent basis, and D(y) applied to it
+              Tensor<1, dim - 1> eb;
+              for (unsigned int k = 0; k < dim - 1; ++k)
+                eb[k] = contact.tangents[k][b];
+              const double       g    = contact.threshold[s];
+              const double       norm = y[s].norm();
+              Tensor<1, dim - 1> Deb;
+              if (norm < g)
+                Deb = eb;
+              else if (norm > 0.)
+                {
+                  const Tensor<1, dim - 1> yhat = y[s] / norm;
+                  Deb = g / norm * (eb - (eb * yhat) * yhat);
+                }
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int k = 0; k < dim - 1; ++k)
+                  local_matrix(a, b) += m_r * contact.tangents[k][a] * Deb[k];
             }
-          system.homogeneous_constraints.distribute_local_to_global(
-            local_matrix, local_dofs, newton_matrix);
-        }
+        if (local_matrix.frobenius_norm() == 0.)
+          continue;
+        for (unsigned int a = 0; a < dim; ++a)
+          local_dofs[a] = contact.nodes[s].dofs[a];
+        system.homogeneous_constraints.distribute_local_to_global(
+          local_matrix, local_dofs, newton_matrix);
+      }
     newton_matrix.compress(VectorOperation::add);
   }
 
@@ -88,12 +169,10 @@ namespace dualcontact
                                          const TrilinosWrappers::MPI::Vector &v,
                                          unsigned int &iterations)
   {
-    std::vector<double> z;
-    augmented_pressures(contact, v, system.r, z);
-    std::vector<bool> active(z.size());
-    for (unsigned int s = 0; s < z.size(); ++s)
-      active[s] = z[s] >= 0.;
-    assemble_newton_matrix(system, contact, active);
+    std::vector<double>             z;
+    std::vector<Tensor<1, dim - 1>> y;
+    nodal_state(contact, v, system.r, z, y);
+    assemble_newton_matrix(system, contact, z, y);
 
     Timer timer(v.get_mpi_communicator(), true);
     linear_solver.initialize(newton_matrix);
@@ -110,7 +189,9 @@ namespace dualcontact
   UzawaSolver<dim>::solve(const ContactSystem           &system,
                           ContactSet<dim>               &contact,
                           TrilinosWrappers::MPI::Vector &v,
-                          std::vector<IterationRecord>  &log)
+                          std::vector<IterationRecord>  &log,
+                          const bool                     update_threshold,
+                          const double                   threshold_tolerance)
   {
     const MPI_Comm comm      = v.get_mpi_communicator();
     const double   tolerance = parameters.uzawa_tolerance;
@@ -120,9 +201,10 @@ namespace dualcontact
     ContactStatistics statistics;
     amg_valid = false; // a new system: build the preconditioner afresh
 
-    TrilinosWrappers::MPI::Vector v_previous(v);
-    std::vector<double>           z;
-    double                        previous_change = 0.;
+    TrilinosWrappers::MPI::Vector   v_previous(v);
+    std::vector<double>             z;
+    std::vector<Tensor<1, dim - 1>> y;
+    double                          previous_change = 0.;
 
     for (unsigned int k = 1; k <= parameters.max_uzawa_steps; ++k)
       {
@@ -150,31 +232,60 @@ namespace dualcontact
                  record,
                  log);
 
-        // Multiplier update l1 <- (l1 + r (v_n - g0))^+ and the measures of
-        // convergence, all reduced over the ranks.
-        augmented_pressures(contact, v, system.r, z);
-        double                  l1_change2 = 0, l1_norm2 = 0, l1_max = 0;
-        double                  violation = 0, complementarity = 0;
-        types::global_dof_index n_active = 0;
+        // Multiplier updates l1 <- (l1 + r (v_n - g0))^+ and
+        // l2 <- proj_[-g,g](l2 + r v_t), with merged loop 1 also g <- F l1,
+        // and the measures of convergence, all reduced over the ranks.
+        nodal_state(contact, v, system.r, z, y);
+        // sums: |dl1|^2, |l1|^2, |dl2|^2, |l2|^2, |dg|^2, |g|^2
+        double                  sums[6] = {0, 0, 0, 0, 0, 0};
+        double                  l1_max = 0, violation = 0, complementarity = 0;
+        types::global_dof_index counts[3] = {0, 0, 0}; // active, stick, slip
         for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
           {
             const double l1_new = positive_part(z[s]);
             const double gap =
               contact.nodes[s].gap0 - contact.normal_displacement(v, s);
-            l1_change2 += std::pow(l1_new - contact.l1[s], 2);
-            l1_norm2 += l1_new * l1_new;
+            sums[0] += std::pow(l1_new - contact.l1[s], 2);
+            sums[1] += l1_new * l1_new;
             l1_max          = std::max(l1_max, l1_new);
             violation       = std::max(violation, positive_part(-gap));
             complementarity = std::max(complementarity, l1_new * std::abs(gap));
-            n_active += (l1_new > 0.);
+            counts[0] += (l1_new > 0.);
             contact.l1[s] = l1_new;
+            if (contact.friction)
+              {
+                // merged loop 1: g = F l1 first, so that |l2| <= g holds
+                if (update_threshold)
+                  {
+                    const double g_new = contact.coefficient[s] * l1_new;
+                    sums[4] += std::pow(g_new - contact.threshold[s], 2);
+                    sums[5] += g_new * g_new;
+                    contact.threshold[s] = g_new;
+                  }
+                const Tensor<1, dim - 1> l2_new =
+                  project(y[s], contact.threshold[s]);
+                sums[2] += (l2_new - contact.l2[s]).norm_square();
+                sums[3] += l2_new.norm_square();
+                contact.l2[s] = l2_new;
+                if (l1_new > 0.)
+                  ++counts[y[s].norm() < contact.threshold[s] ? 1 : 2];
+              }
           }
-        l1_change2      = Utilities::MPI::sum(l1_change2, comm);
-        l1_norm2        = Utilities::MPI::sum(l1_norm2, comm);
+        Utilities::MPI::sum(ArrayView<const double>(sums, 6),
+                            comm,
+                            ArrayView<double>(sums, 6));
+        Utilities::MPI::sum(ArrayView<const types::global_dof_index>(counts, 3),
+                            comm,
+                            ArrayView<types::global_dof_index>(counts, 3));
         l1_max          = Utilities::MPI::max(l1_max, comm);
         violation       = Utilities::MPI::max(violation, comm);
         complementarity = Utilities::MPI::max(complementarity, comm);
-        n_active        = Utilities::MPI::sum(n_active, comm);
+        const types::global_dof_index n_active   = counts[0];
+        const double                  l1_change2 = sums[0], l1_norm2 = sums[1];
+        record.change_l2 = relative(std::sqrt(sums[2]), std::sqrt(sums[3]));
+        record.change_g  = relative(std::sqrt(sums[4]), std::sqrt(sums[5]));
+        record.n_stick   = counts[1];
+        record.n_slip    = counts[2];
 
         const double v_norm_inf = v.linfty_norm();
         v_previous.sadd(-1., 1., v); // now v - v_previous
@@ -192,6 +303,9 @@ namespace dualcontact
         statistics.cg_iterations += record.cg_iterations;
         statistics.amg_setups += record.amg_setups;
         statistics.n_active = n_active;
+        statistics.n_stick  = record.n_stick;
+        statistics.n_slip   = record.n_slip;
+        statistics.change_g = record.change_g;
 
         std::ostringstream line;
         line << "   Uzawa " << std::setw(4) << k << ": Newton " << std::setw(2)
@@ -201,6 +315,11 @@ namespace dualcontact
              << record.change_l1 << ", d(v) " << record.change_v
              << ", violation " << record.violation << ", compl. "
              << record.complementarity;
+        if (contact.friction)
+          line << ", d(l2) " << record.change_l2 << ", stick/slip "
+               << record.n_stick << "/" << record.n_slip;
+        if (update_threshold)
+          line << ", d(g) " << record.change_g;
         if (print_timing)
           line << std::fixed << std::setprecision(3) << "  (" << record.time
                << " s)";
@@ -213,7 +332,9 @@ namespace dualcontact
         previous_change = record.change_l1;
 
         if (record.change_l1 <= tolerance && record.change_v <= tolerance &&
-            record.violation <= tolerance)
+            record.violation <= tolerance &&
+            (!contact.friction || record.change_l2 <= tolerance) &&
+            (!update_threshold || record.change_g <= threshold_tolerance))
           return statistics;
       }
 
@@ -254,7 +375,8 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector smooth_gradient(rhs), gradient(rhs),
       direction(rhs), direction_free(rhs), newton_rhs(rhs);
     std::vector<double>                  z, dn(n_nodes);
-    std::vector<bool>                    active(n_nodes);
+    std::vector<Tensor<1, dim - 1>>      y, dt(n_nodes);
+    std::vector<unsigned char>           status(n_nodes);
     Vector<double>                       local_vector(dim);
     std::vector<types::global_dof_index> local_dofs(dim);
     const Tensor<1, dim>                &n = contact.normal;
@@ -264,23 +386,34 @@ namespace dualcontact
       {
         Timer timer(comm, true);
         // gradient of M_k (constrained rows are zero: they are not unknowns)
-        augmented_pressures(contact, v, r, z);
+        nodal_state(contact, v, r, z, y);
         K.vmult(smooth_gradient, v);
         smooth_gradient -= rhs;
         constraints.set_zero(smooth_gradient);
         gradient = smooth_gradient;
+        // contact terms m_s ((z_s)^+ n + T proj_g(y_s))
         for (unsigned int s = 0; s < n_nodes; ++s)
-          if (z[s] > 0.)
-            {
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  local_vector(c) = contact.nodes[s].weight * z[s] * n[c];
-                  local_dofs[c]   = contact.nodes[s].dofs[c];
-                }
-              constraints.distribute_local_to_global(local_vector,
-                                                     local_dofs,
-                                                     gradient);
-            }
+          {
+            const double   m     = contact.nodes[s].weight;
+            Tensor<1, dim> force = (m * positive_part(z[s])) * n;
+            if (contact.friction)
+              {
+                const Tensor<1, dim - 1> q =
+                  project(y[s], contact.threshold[s]);
+                for (unsigned int k = 0; k < dim - 1; ++k)
+                  force += (m * q[k]) * contact.tangents[k];
+              }
+            if (force.norm() == 0.)
+              continue;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                local_vector(c) = force[c];
+                local_dofs[c]   = contact.nodes[s].dofs[c];
+              }
+            constraints.distribute_local_to_global(local_vector,
+                                                   local_dofs,
+                                                   gradient);
+          }
         gradient.compress(VectorOperation::add);
 
         IterationRecord record;
@@ -289,14 +422,16 @@ namespace dualcontact
         record.index      = j;
         record.gradient   = gradient.l2_norm() / reference;
 
-        // Where z = 0 (touching, e.g. at zero initial gap) the generalised
-        // derivative may take either branch; taking the active one spares
-        // the first step a free fall toward the foundation.
+        // Status of each node (separated, stick, slip) as the generalised
+        // Hessian sees it.
         types::global_dof_index n_active = 0;
         for (unsigned int s = 0; s < n_nodes; ++s)
           {
-            active[s] = z[s] >= 0.;
-            n_active += active[s];
+            status[s] = node_status(z[s],
+                                    contact.friction,
+                                    contact.friction &&
+                                      y[s].norm() < contact.threshold[s]);
+            n_active += (status[s] > 0);
           }
         record.n_active = Utilities::MPI::sum(n_active, comm);
 
@@ -326,17 +461,17 @@ namespace dualcontact
                       ", wanted " + std::to_string(target / reference) +
                       "). Raise <Solver/Maximum Newton steps>."));
 
-        // Generalised Hessian H = K + sum_{active s} m_s r n n^T.
-        assemble_newton_matrix(system, contact, active);
+        // Generalised Hessian H = K + contact terms.
+        assemble_newton_matrix(system, contact, z, y);
 
-        // Rebuild the AMG only when the active set moved enough, measured
+        // Rebuild the AMG only when the node statuses moved enough, measured
         // against the size of the active set (the part of H that changes).
         types::global_dof_index n_changed = 0, n_active_built = 0;
         if (amg_valid)
           for (unsigned int s = 0; s < n_nodes; ++s)
             {
-              n_changed += (active[s] != amg_active_set[s]);
-              n_active_built += amg_active_set[s];
+              n_changed += (status[s] != amg_status[s]);
+              n_active_built += (amg_status[s] > 0);
             }
         n_changed      = Utilities::MPI::sum(n_changed, comm);
         n_active_built = Utilities::MPI::sum(n_active_built, comm);
@@ -350,7 +485,7 @@ namespace dualcontact
         if (rebuild)
           {
             linear_solver.initialize(newton_matrix);
-            amg_active_set    = active;
+            amg_status        = status;
             amg_valid         = true;
             record.amg_setups = 1;
           }
@@ -380,17 +515,29 @@ namespace dualcontact
         const double q2 = direction_free * tmp;
         const double q1 = smooth_gradient * direction;
         for (unsigned int s = 0; s < n_nodes; ++s)
-          dn[s] = contact.normal_displacement(direction, s);
+          {
+            dn[s] = contact.normal_displacement(direction, s);
+            if (contact.friction)
+              dt[s] = contact.tangential_displacement(direction, s);
+          }
         // phi'(a) and phi''(a) (the latter from the right), summed over ranks
         const auto derivatives = [&](const double alpha) {
           double local[2] = {0., 0.};
           for (unsigned int s = 0; s < n_nodes; ++s)
             {
+              const double m  = contact.nodes[s].weight;
               const double zs = z[s] + alpha * r * dn[s];
               if (zs > 0. || (zs == 0. && dn[s] > 0.))
                 {
-                  local[0] += contact.nodes[s].weight * zs * dn[s];
-                  local[1] += contact.nodes[s].weight * r * dn[s] * dn[s];
+                  local[0] += m * zs * dn[s];
+                  local[1] += m * r * dn[s] * dn[s];
+                }
+              if (contact.friction)
+                {
+                  const Tensor<1, dim - 1> ys = y[s] + alpha * r * dt[s];
+                  const double             g  = contact.threshold[s];
+                  local[0] += m * (project(ys, g) * dt[s]);
+                  local[1] += m * r * huber_curvature(ys, g, dt[s]);
                 }
             }
           double global[2];
@@ -403,9 +550,17 @@ namespace dualcontact
         const auto merit_change = [&](const double alpha) {
           double local = 0;
           for (unsigned int s = 0; s < n_nodes; ++s)
-            local += contact.nodes[s].weight / (2. * r) *
-                     (std::pow(positive_part(z[s] + alpha * r * dn[s]), 2) -
-                      std::pow(positive_part(z[s]), 2));
+            {
+              const double m = contact.nodes[s].weight;
+              local += m / (2. * r) *
+                       (std::pow(positive_part(z[s] + alpha * r * dn[s]), 2) -
+                        std::pow(positive_part(z[s]), 2));
+              if (contact.friction)
+                local += m / r *
+                         (huber(Tensor<1, dim - 1>(y[s] + alpha * r * dt[s]),
+                                contact.threshold[s]) -
+                          huber(y[s], contact.threshold[s]));
+            }
           return alpha * q1 + 0.5 * alpha * alpha * q2 +
                  Utilities::MPI::sum(local, comm);
         };

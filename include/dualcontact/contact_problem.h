@@ -21,6 +21,7 @@
 
 #include <dualcontact/contact_set.h>
 #include <dualcontact/elasticity.h>
+#include <dualcontact/friction_iteration.h>
 #include <dualcontact/parameters.h>
 #include <dualcontact/scene.h>
 #include <dualcontact/uzawa_solver.h>
@@ -50,6 +51,10 @@ namespace dualcontact
     unsigned int            uzawa_steps        = 0;
     unsigned int            newton_steps       = 0;
     unsigned int            amg_setups         = 0;
+    unsigned int            friction_steps     = 0; // loop 1 steps
+    types::global_dof_index n_stick            = 0;
+    types::global_dof_index n_slip             = 0;
+    double                  tangential_force   = 0.; // |sum_s m_s l2_s|
     double                  uzawa_rate         = 0.; // observed contraction
     double                  l1_error_estimate  = 0.; // relative, from the rate
     double                  contact_force      = 0.; // sum_s m_s l1_s
@@ -184,6 +189,7 @@ namespace dualcontact
     // contact: nodes and multipliers, loops 2 and 3, their log
     ContactSet<dim>              contact_set;
     UzawaSolver<dim>             uzawa_solver;
+    FrictionIteration<dim>       friction_iteration;
     std::vector<IterationRecord> iteration_log;
 
     // per-cycle figures, and the (cycle, file) list of the .pvd record

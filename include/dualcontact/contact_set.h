@@ -70,6 +70,36 @@ namespace dualcontact
       return vn;
     }
 
+    /**
+     * Tangential displacement v_t(s) at local node s, in the basis of the
+     * tangents (one component in 2D).
+     */
+    Tensor<1, dim - 1>
+    tangential_displacement(const TrilinosWrappers::MPI::Vector &v,
+                            const unsigned int                   s) const
+    {
+      Tensor<1, dim - 1> vt;
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          vt[k] += v[nodes[s].dofs[c]] * tangents[k][c];
+      return vt;
+    }
+
+    /**
+     * Status of local node s at convergence: 0 separated (l1 = 0), 1 in
+     * contact and sticking (or in contact without friction), 2 slipping
+     * (|l2| = g).
+     */
+    unsigned int
+    status(const unsigned int s) const
+    {
+      if (!(l1[s] > 0.))
+        return 0;
+      if (!friction || l2[s].norm() < (1. - 1e-9) * threshold[s])
+        return 1;
+      return 2;
+    }
+
     /** Number of contact nodes on this rank and on all ranks. */
     unsigned int
     n_local_nodes() const
@@ -98,10 +128,22 @@ namespace dualcontact
 
     std::vector<ContactNode<dim>> nodes;
     Tensor<1, dim>                normal;  // n = -m, outward for the body
-    Tensor<1, dim>                tangent; // 2D: t = (-n_2, n_1)
+    Tensor<1, dim>                tangent; // the first of the tangents
+    // an orthonormal basis of the tangent plane; 2D: t = (-n_2, n_1)
+    std::array<Tensor<1, dim>, dim - 1> tangents;
 
     /** Contact pressure multiplier l1 >= 0, one per local node. */
     std::vector<double> l1;
+
+    /**
+     * Friction: whether the tangential terms run at all, the tangential
+     * multiplier l2 (|l2| <= g, in the tangent basis), the threshold g and,
+     * for Coulomb, the coefficient F at every local node.
+     */
+    bool                            friction = false;
+    std::vector<Tensor<1, dim - 1>> l2;
+    std::vector<double>             threshold;
+    std::vector<double>             coefficient;
 
   private:
     types::global_dof_index n_global = 0;

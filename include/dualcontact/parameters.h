@@ -41,6 +41,19 @@ namespace dualcontact
     coulomb
   };
 
+  /** Loop 1: how the Coulomb threshold g = F l1 is iterated. */
+  enum class FrictionStrategy
+  {
+    nested, // successive approximations around converged Uzawa solves
+    merged  // g updated inside every Uzawa step (one loop)
+  };
+
+  enum class InitialThreshold
+  {
+    zero,        // g^0 = 0
+    frictionless // g^0 = F times the frictionless contact pressure
+  };
+
   enum class RefinementStrategy
   {
     global
@@ -135,6 +148,12 @@ namespace dualcontact
     FrictionLaw law = FrictionLaw::none;
     std::string coefficient;
     std::string threshold;
+
+    // loop 1 (Coulomb only)
+    FrictionStrategy strategy          = FrictionStrategy::merged;
+    InitialThreshold initial_threshold = InitialThreshold::zero;
+    double           tolerance         = 1e-6;
+    unsigned int     max_steps         = 100;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -24,10 +24,13 @@ namespace dualcontact
   /** What a scene calls for; the solver composes only these. */
   struct Effects
   {
-    bool        contact    = false;
-    FrictionLaw friction   = FrictionLaw::none;
-    bool        body_force = false;
-    bool        tractions  = false;
+    bool        contact  = false;
+    FrictionLaw friction = FrictionLaw::none;
+    // the scene asked for friction whose coefficient or threshold is zero:
+    // the frictionless path runs (and the log says so)
+    bool zero_friction = false;
+    bool body_force    = false;
+    bool tractions     = false;
 
     /** One line per effect, saying what runs and what does not. */
     std::string
@@ -79,6 +82,14 @@ namespace dualcontact
     {
       return body_force_.get();
     }
+    /** Friction coefficient F (Coulomb) or threshold g (given), scalar;
+     * nullptr without friction. */
+    const Function<dim> *
+    friction_function() const
+    {
+      return friction_.get();
+    }
+
     /** Exact contact pressure (scalar), or nullptr if none is known. */
     const Function<dim> *
     exact_pressure() const
@@ -123,6 +134,7 @@ namespace dualcontact
     std::unique_ptr<Function<dim>>                               body_force_;
     std::unique_ptr<Function<dim>>                               exact_;
     std::unique_ptr<Function<dim>> exact_pressure_;
+    std::unique_ptr<Function<dim>> friction_;
     Functions::ZeroFunction<dim>   zero{dim};
   };
 } // namespace dualcontact

@@ -52,7 +52,12 @@ namespace dualcontact
     double change_v        = 0.; // uzawa: |v_new - v| / |v_new|
     double violation       = 0.; // uzawa: max (v_n - g0)^+ / |v|_inf
     double complementarity = 0.; // uzawa: max l1 |g0 - v_n| / (max l1 |v|_inf)
-    double time            = 0.; // wall time of the step [s]
+    double change_l2       = 0.; // uzawa: |l2_new - l2| / |l2_new|
+    double change_g        = 0.; // uzawa (merged) and friction rows:
+                                 // |g_new - g| / |g_new|
+    types::global_dof_index n_stick = 0;  // in contact and sticking
+    types::global_dof_index n_slip  = 0;  // in contact and slipping
+    double                  time    = 0.; // wall time of the step [s]
   };
 
   /** Totals of one call of UzawaSolver::solve. */
@@ -68,6 +73,11 @@ namespace dualcontact
     // about d_k rho / (1 - rho) (DESIGN.md §3).
     double rate               = 0.;
     double estimated_l1_error = 0.;
+    // friction
+    types::global_dof_index n_stick        = 0;
+    types::global_dof_index n_slip         = 0;
+    unsigned int            friction_steps = 0;  // loop 1 (nested) steps
+    double                  change_g       = 0.; // last change of g
   };
 
   template <int dim>
@@ -91,7 +101,9 @@ namespace dualcontact
     solve(const ContactSystem           &system,
           ContactSet<dim>               &contact,
           TrilinosWrappers::MPI::Vector &v,
-          std::vector<IterationRecord>  &log);
+          std::vector<IterationRecord>  &log,
+          const bool                     update_threshold    = false,
+          const double                   threshold_tolerance = 0.);
 
     /**
      * For benchmarks: the wall time of one linear solve on the current
@@ -106,15 +118,22 @@ namespace dualcontact
                          unsigned int                        &iterations);
 
   private:
-    /** H = K + sum_{active s} m_s r n n^T, condensed. */
+    /**
+     * H = K + sum_{z_s >= 0} m_s r n n^T + sum_s m_s r T D(y_s) T^T,
+     * condensed, with T the tangent basis and D the derivative of the
+     * projection onto the disc of radius g (I when sticking).
+     */
     void
-    assemble_newton_matrix(const ContactSystem     &system,
-                           const ContactSet<dim>   &contact,
-                           const std::vector<bool> &active);
+    assemble_newton_matrix(const ContactSystem                   &system,
+                           const ContactSet<dim>                 &contact,
+                           const std::vector<double>             &z,
+                           const std::vector<Tensor<1, dim - 1>> &y);
 
     /**
      * Loop 3: minimise M_k(v) = 1/2 a(v,v) - L(v) + (chi/2)|v - v^k|_M^2
-     * + sum_s m_s/(2r) (((l1_s + r(v_n - g0))^+)^2 - l1_s^2) over v by
+     * + sum_s m_s/(2r) (((l1_s + r(v_n - g0))^+)^2 - l1_s^2)
+     * + sum_s m_s/r psi_g(l2_s + r v_t) over v (psi_g: the Huber function
+     * whose gradient is the projection onto the disc of radius g), by
      * semi-smooth Newton until |grad| <= max(final_tolerance |b|,
      * min(envelope |b|, factor |grad_0|)), grad_0 the gradient at the start.
      */
@@ -129,12 +148,16 @@ namespace dualcontact
              IterationRecord                     &step_record,
              std::vector<IterationRecord>        &log);
 
-    /** z_s = l1_s + r (v_n(s) - g0_s) at every local contact node. */
+    /**
+     * At every local contact node: z_s = l1_s + r (v_n(s) - g0_s) and, with
+     * friction, y_s = l2_s + r v_t(s).
+     */
     void
-    augmented_pressures(const ContactSet<dim>               &contact,
-                        const TrilinosWrappers::MPI::Vector &v,
-                        const double                         r,
-                        std::vector<double>                 &z) const;
+    nodal_state(const ContactSet<dim>               &contact,
+                const TrilinosWrappers::MPI::Vector &v,
+                const double                         r,
+                std::vector<double>                 &z,
+                std::vector<Tensor<1, dim - 1>>     &y) const;
 
     const SolverParameters &parameters;
     ElasticSolver<dim>     &linear_solver;
@@ -144,7 +167,7 @@ namespace dualcontact
     // the Newton matrix H = K + sum_active m_s r n n^T, and the active set
     // it had when its AMG preconditioner was last built
     TrilinosWrappers::SparseMatrix newton_matrix;
-    std::vector<bool>              amg_active_set;
+    std::vector<unsigned char>     amg_status; // per node, see minimise()
     bool                           amg_valid                 = false;
     unsigned int                   cg_iterations_after_setup = 0;
     unsigned int                   last_cg_iterations        = 0;

@@ -1,0 +1,50 @@
+// Loop 1 of DESIGN.md §2: successive approximations of the Coulomb friction
+// threshold g = F l1 around the given-friction (Tresca) problem, which the
+// Uzawa solver (loops 2 and 3) solves.
+#ifndef dualcontact_friction_iteration_h
+#define dualcontact_friction_iteration_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <dualcontact/contact_set.h>
+#include <dualcontact/parameters.h>
+#include <dualcontact/uzawa_solver.h>
+
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  class FrictionIteration
+  {
+  public:
+    FrictionIteration(const FrictionParameters &parameters,
+                      UzawaSolver<dim>         &uzawa_solver,
+                      ConditionalOStream       &pcout);
+
+    /**
+     * Solve the contact problem the contact set describes: without friction
+     * or with a given threshold, one Uzawa solve; with Coulomb friction,
+     * loop 1 in the chosen strategy:
+     *  - nested: g^{s+1} = F l1(u^s) after each converged Uzawa solve, until
+     *    |g^{s+1} - g^s| <= tol |g^{s+1}|;
+     *  - merged: g = F l1 after every Uzawa step, one loop.
+     * g^0 is zero, or F times the frictionless pressure. One record per
+     * loop-1 step is appended to `log` (loop "friction").
+     */
+    ContactStatistics
+    solve(const ContactSystem           &system,
+          ContactSet<dim>               &contact,
+          TrilinosWrappers::MPI::Vector &v,
+          std::vector<IterationRecord>  &log);
+
+  private:
+    const FrictionParameters &parameters;
+    UzawaSolver<dim>         &uzawa_solver;
+    ConditionalOStream       &pcout;
+  };
+} // namespace dualcontact
+
+#endif
