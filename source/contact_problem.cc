@@ -193,6 +193,93 @@ namespace dualcontact
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::net_load(const Tensor<1, dim> &direction) const
+  {
+    // b . E, E the nodal vector of the rigid translation along `direction`
+    TrilinosWrappers::MPI::Vector translation(locally_owned_dofs,
+                                              mpi_communicator);
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        ComponentMask mask(dim, false);
+        mask.set(c, true);
+        for (const auto i : DoFTools::extract_dofs(dof_handler, mask))
+          translation[i] = direction[c];
+      }
+    translation.compress(VectorOperation::insert);
+    return system_rhs * translation;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_equilibrium() const
+  {
+    // A translation that only the contact can stop must be balanced by
+    // contact forces: they push along m (never pull) and their tangential
+    // part is at most the friction capacity. Necessary conditions, checked
+    // before solving so that an impossible load never loops.
+    const Tensor<1, dim> m = -contact_set.normal; // into the body
+    Tensor<1, dim>       resultant;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        Tensor<1, dim> e;
+        e[d]         = 1.;
+        resultant[d] = net_load(e);
+      }
+    const double scale = 1e-10 * resultant.norm();
+
+    const bool   normal_free = scene.translation_is_free(m, triangulation);
+    const double load_away   = net_load(m); // > 0: pulls off the foundation
+    if (normal_free && load_away > scale)
+      throw InputError(
+        "No equilibrium: the net load pulls the body away from the foundation "
+        "(" +
+          std::to_string(load_away) +
+          " along the foundation normal) and only the contact could hold it "
+          "in that direction.",
+        exit_no_equilibrium);
+
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      {
+        const Tensor<1, dim> &t = contact_set.tangents[k];
+        if (!scene.translation_is_free(t, triangulation))
+          continue;
+        const double tangential = std::abs(net_load(t));
+        double       capacity   = 0.; // what friction can resist at most
+        std::string  bound      = "0 (frictionless contact)";
+        if (scene.effects().friction == FrictionLaw::given)
+          {
+            double local = 0;
+            for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+              local += contact_set.nodes[s].weight * contact_set.threshold[s];
+            capacity = Utilities::MPI::sum(local, mpi_communicator);
+            bound    = std::to_string(capacity) + " (the sum of the given "
+                                                  "threshold over Gamma_C)";
+          }
+        else if (scene.effects().friction == FrictionLaw::coulomb)
+          {
+            if (!normal_free)
+              continue; // N is not known from the load alone
+            double largest = 0;
+            for (const double F : contact_set.coefficient)
+              largest = std::max(largest, F);
+            largest  = Utilities::MPI::max(largest, mpi_communicator);
+            capacity = largest * (-load_away);
+            bound    = std::to_string(capacity) +
+                    " (F N, N = " + std::to_string(-load_away) +
+                    " the normal load)";
+          }
+        if (tangential > capacity * (1. + 1e-10) + scale)
+          throw InputError(
+            "No equilibrium: the net tangential load " +
+              std::to_string(tangential) +
+              " exceeds what friction can resist, " + bound +
+              ", and only friction holds the body along the foundation.",
+            exit_no_equilibrium);
+      }
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::solve_contact(TrilinosWrappers::MPI::Vector &v)
   {
@@ -201,6 +288,7 @@ namespace dualcontact
       mapping, dof_handler, hanging_node_constraints, constraints, scene);
     AssertThrow(contact_set.n_global_nodes() > 0,
                 ExcMessage("The contact boundary has no contact nodes."));
+    check_equilibrium();
 
     // r is relative to E / h_C, so that the Uzawa steps do not depend on
     // the units or on the mesh size (DESIGN.md §3).
@@ -278,7 +366,39 @@ namespace dualcontact
     t_min                   = Utilities::MPI::min(t_min, mpi_communicator);
     t_max                   = Utilities::MPI::max(t_max, mpi_communicator);
     if (dim == 2 && t_max >= t_min)
-      result.contact_half_width = 0.5 * (t_max - t_min);
+      {
+        result.contact_half_width = 0.5 * (t_max - t_min);
+        // A sharper estimate of the zone's edges: near an edge of a smooth
+        // contact the pressure vanishes like sqrt(distance), so l1^2 is
+        // linear there; extrapolate it from the two outermost active nodes
+        // on each side to zero.
+        std::vector<std::pair<double, double>> local;
+        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+          if (contact_set.l1[s] > 0.)
+            local.emplace_back(contact_set.nodes[s].position *
+                                 contact_set.tangent,
+                               contact_set.l1[s]);
+        std::vector<std::pair<double, double>> active;
+        for (const auto &part :
+             Utilities::MPI::all_gather(mpi_communicator, local))
+          active.insert(active.end(), part.begin(), part.end());
+        std::sort(active.begin(), active.end());
+        const auto edge = [](const std::pair<double, double> &outer,
+                             const std::pair<double, double> &inner) {
+          const double p2_outer = outer.second * outer.second;
+          const double p2_inner = inner.second * inner.second;
+          if (!(p2_inner > p2_outer))
+            return outer.first; // not a square-root edge: keep the node
+          return outer.first +
+                 (outer.first - inner.first) * p2_outer / (p2_inner - p2_outer);
+        };
+        if (active.size() >= 4)
+          result.contact_edge_half_width =
+            0.5 * (edge(active.back(), active[active.size() - 2]) -
+                   edge(active.front(), active[1]));
+        else
+          result.contact_edge_half_width = result.contact_half_width;
+      }
     if (exact != nullptr)
       result.pressure_error =
         std::sqrt(Utilities::MPI::sum(error2, mpi_communicator) /
@@ -431,7 +551,8 @@ namespace dualcontact
            "max_pressure,contact_half_width,pressure_error,u_l2,"
            "l2_error,h1_error,l2_rate,h1_rate,time_setup,time_assembly,"
            "time_solve,time_output,time_reference,memory_mb,"
-           "friction_steps,stick_nodes,slip_nodes,tangential_force\n";
+           "friction_steps,stick_nodes,slip_nodes,tangential_force,"
+           "contact_edge_half_width\n";
     csv << std::setprecision(10);
     for (const CycleResult &r : cycle_results)
       csv << r.cycle << ',' << r.n_cells << ',' << r.n_dofs << ','
@@ -444,7 +565,7 @@ namespace dualcontact
           << r.time_assembly << ',' << r.time_solve << ',' << r.time_output
           << ',' << r.time_reference << ',' << r.memory_mb << ','
           << r.friction_steps << ',' << r.n_stick << ',' << r.n_slip << ','
-          << r.tangential_force << '\n';
+          << r.tangential_force << ',' << r.contact_edge_half_width << '\n';
   }
 
   template <int dim>
@@ -532,7 +653,8 @@ namespace dualcontact
                 << std::setprecision(8) << "   total contact force "
                 << result.contact_force << ", peak pressure "
                 << result.max_pressure << ", contact half-width "
-                << result.contact_half_width;
+                << result.contact_half_width << " (nodes), "
+                << result.contact_edge_half_width << " (edges extrapolated)";
         if (scene.exact_pressure() != nullptr)
           pcout << ", pressure error (rel. L2) " << result.pressure_error;
         if (scene.effects().friction != FrictionLaw::none)

@@ -31,9 +31,9 @@ namespace dualcontact
     const FrictionParameters &parameters,
     UzawaSolver<dim>         &uzawa_solver,
     ConditionalOStream       &pcout)
-    : parameters(parameters)
-    , uzawa_solver(uzawa_solver)
-    , pcout(pcout)
+      : parameters(parameters)
+      , uzawa_solver(uzawa_solver)
+      , pcout(pcout)
   {}
 
   template <int dim>
@@ -43,7 +43,8 @@ namespace dualcontact
                                 TrilinosWrappers::MPI::Vector &v,
                                 std::vector<IterationRecord>  &log)
   {
-    const bool coulomb = contact.friction && parameters.law == FrictionLaw::coulomb;
+    const bool coulomb =
+      contact.friction && parameters.law == FrictionLaw::coulomb;
     if (!coulomb)
       return uzawa_solver.solve(system, contact, v, log);
 
@@ -75,7 +76,8 @@ namespace dualcontact
 
     for (unsigned int step = 1; step <= parameters.max_steps; ++step)
       {
-        const ContactStatistics part = uzawa_solver.solve(system, contact, v, log);
+        const ContactStatistics part =
+          uzawa_solver.solve(system, contact, v, log);
         add(total, part);
 
         // the relative change of g = F l1
@@ -89,28 +91,28 @@ namespace dualcontact
         Utilities::MPI::sum(ArrayView<const double>(sums, 2),
                             comm,
                             ArrayView<double>(sums, 2));
-        const double change =
-          sums[1] > 0. ? std::sqrt(sums[0] / sums[1]) : (sums[0] > 0. ? 1. : 0.);
+        const double change = sums[1] > 0. ? std::sqrt(sums[0] / sums[1]) :
+                                             (sums[0] > 0. ? 1. : 0.);
 
         IterationRecord record;
-        record.loop         = "friction";
-        record.index        = step;
-        record.uzawa_step   = part.uzawa_steps;
-        record.newton_steps = part.newton_steps;
+        record.loop          = "friction";
+        record.index         = step;
+        record.uzawa_step    = part.uzawa_steps;
+        record.newton_steps  = part.newton_steps;
         record.cg_iterations = part.cg_iterations;
-        record.n_active     = part.n_active;
-        record.n_stick      = part.n_stick;
-        record.n_slip       = part.n_slip;
-        record.change_g     = change;
+        record.n_active      = part.n_active;
+        record.n_stick       = part.n_stick;
+        record.n_slip        = part.n_slip;
+        record.change_g      = change;
         log.push_back(record);
         total.friction_steps = step;
         total.change_g       = change;
 
         std::ostringstream line;
         line << "   loop 1, step " << std::setw(3) << step << ": "
-             << part.uzawa_steps << " Uzawa steps, stick/slip "
-             << part.n_stick << "/" << part.n_slip << ", d(g) "
-             << std::scientific << std::setprecision(2) << change;
+             << part.uzawa_steps << " Uzawa steps, stick/slip " << part.n_stick
+             << "/" << part.n_slip << ", d(g) " << std::scientific
+             << std::setprecision(2) << change;
         pcout << line.str() << std::endl;
 
         // converged: keep the g the solution was computed with (so that
@@ -123,7 +125,8 @@ namespace dualcontact
 
     AssertThrow(false,
                 ExcMessage("The threshold iteration (loop 1) did not converge "
-                           "in " + std::to_string(parameters.max_steps) +
+                           "in " +
+                           std::to_string(parameters.max_steps) +
                            " steps (<Friction/Maximum threshold steps>); the "
                            "last relative change of g was " +
                            std::to_string(total.change_g) +

@@ -356,6 +356,46 @@ namespace dualcontact
   }
 
   template <int dim>
+  bool
+  Scene<dim>::translation_is_free(
+    const Tensor<1, dim>                            &e,
+    const parallel::distributed::Triangulation<dim> &triangulation) const
+  {
+    const auto            fixed  = ids_with(BoundaryCondition::fixed);
+    const auto            slider = ids_with(BoundaryCondition::normal_fixed);
+    const QGauss<dim - 1> quadrature(2);
+    MappingQ1<dim>        mapping;
+    FE_Nothing<dim>       fe;
+    FEFaceValues<dim>     fe_face(mapping,
+                              fe,
+                              quadrature,
+                              update_normal_vectors | update_JxW_values);
+    // int_{fixed} |e|^2 + int_{slider} (e.n)^2, against the boundary measure
+    double held = 0, measure = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              fe_face.reinit(cell, face);
+              const bool all    = fixed.count(face->boundary_id()) > 0;
+              const bool normal = slider.count(face->boundary_id()) > 0;
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  measure += fe_face.JxW(q);
+                  if (all)
+                    held += fe_face.JxW(q) * (e * e);
+                  else if (normal)
+                    held += fe_face.JxW(q) *
+                            std::pow(e * fe_face.normal_vector(q), 2);
+                }
+            }
+    const MPI_Comm comm = triangulation.get_communicator();
+    return Utilities::MPI::sum(held, comm) <=
+           1e-12 * Utilities::MPI::sum(measure, comm);
+  }
+
+  template <int dim>
   void
   Scene<dim>::check_rigid_motions(
     const parallel::distributed::Triangulation<dim> &triangulation) const

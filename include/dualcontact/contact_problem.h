@@ -62,10 +62,12 @@ namespace dualcontact
     double                  contact_half_width = 0.; // 2D: half the extent
                                                      // of the active nodes
                                                      // along t
-    double pressure_error = 0.;                      // relative, nodal L2
-    double r              = 0.;                      // augmentation used
-    double chi            = 0.;                      // proximal weight used
-    double time_setup     = 0.;                      // wall times [s]
+    double contact_edge_half_width = 0.; // 2D: the same, with the edges
+                                         // extrapolated (l1^2 linear)
+    double pressure_error = 0.;          // relative, nodal L2
+    double r              = 0.;          // augmentation used
+    double chi            = 0.;          // proximal weight used
+    double time_setup     = 0.;          // wall times [s]
     double time_assembly  = 0.;
     double time_solve     = 0.;
     double time_output    = 0.;
@@ -140,6 +142,10 @@ namespace dualcontact
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
     void
     solve_contact(TrilinosWrappers::MPI::Vector &v);
+    void
+    check_equilibrium() const;
+    double
+    net_load(const Tensor<1, dim> &direction) const;
     void
     postprocess(CycleResult &result);
     void

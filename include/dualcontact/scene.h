@@ -60,6 +60,15 @@ namespace dualcontact
     check_rigid_motions(
       const parallel::distributed::Triangulation<dim> &triangulation) const;
 
+    /**
+     * Whether the rigid translation along e is left free by the fixed and
+     * normal-fixed boundaries (only contact could stop it).
+     */
+    bool
+    translation_is_free(
+      const Tensor<1, dim>                            &e,
+      const parallel::distributed::Triangulation<dim> &triangulation) const;
+
     const Effects &
     effects() const
     {
