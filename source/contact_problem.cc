@@ -211,7 +211,7 @@ namespace dualcontact
   }
 
   template <int dim>
-  void
+  double
   ContactProblem<dim>::check_equilibrium() const
   {
     // A translation that only the contact can stop must be balanced by
@@ -239,14 +239,19 @@ namespace dualcontact
           "in that direction.",
         exit_no_equilibrium);
 
+    // returned: N / |Gamma_C| if only friction holds a tangential load
+    // and N is known (see FrictionIteration::solve), else 0
+    double held_by_friction_pressure = 0.;
     for (unsigned int k = 0; k < dim - 1; ++k)
       {
         const Tensor<1, dim> &t = contact_set.tangents[k];
         if (!scene.translation_is_free(t, triangulation))
           continue;
         const double tangential = std::abs(net_load(t));
-        double       capacity   = 0.; // what friction can resist at most
-        std::string  bound      = "0 (frictionless contact)";
+        if (normal_free && tangential > scale)
+          held_by_friction_pressure = -load_away / contact_set.measure();
+        double      capacity = 0.; // what friction can resist at most
+        std::string bound    = "0 (frictionless contact)";
         if (scene.effects().friction == FrictionLaw::given)
           {
             double local = 0;
@@ -277,6 +282,7 @@ namespace dualcontact
               ", and only friction holds the body along the foundation.",
             exit_no_equilibrium);
       }
+    return held_by_friction_pressure;
   }
 
   template <int dim>
@@ -288,7 +294,7 @@ namespace dualcontact
       mapping, dof_handler, hanging_node_constraints, constraints, scene);
     AssertThrow(contact_set.n_global_nodes() > 0,
                 ExcMessage("The contact boundary has no contact nodes."));
-    check_equilibrium();
+    const double held_by_friction_pressure = check_equilibrium();
 
     // r is relative to E / h_C, so that the Uzawa steps do not depend on
     // the units or on the mesh size (DESIGN.md §3).
@@ -309,9 +315,9 @@ namespace dualcontact
                                homogeneous_constraints,
                                result.r,
                                result.chi};
-    const std::size_t       first = iteration_log.size();
-    const ContactStatistics statistics =
-      friction_iteration.solve(system, contact_set, v, iteration_log);
+    const std::size_t       first      = iteration_log.size();
+    const ContactStatistics statistics = friction_iteration.solve(
+      system, contact_set, v, iteration_log, held_by_friction_pressure);
     for (std::size_t i = first; i < iteration_log.size(); ++i)
       iteration_log[i].cycle = result.cycle;
 

@@ -41,7 +41,8 @@ namespace dualcontact
   FrictionIteration<dim>::solve(const ContactSystem           &system,
                                 ContactSet<dim>               &contact,
                                 TrilinosWrappers::MPI::Vector &v,
-                                std::vector<IterationRecord>  &log)
+                                std::vector<IterationRecord>  &log,
+                                const double held_by_friction_pressure)
   {
     const bool coulomb =
       contact.friction && parameters.law == FrictionLaw::coulomb;
@@ -53,7 +54,18 @@ namespace dualcontact
 
     // g^0: zero, or F times the pressure of the frictionless problem
     std::fill(contact.threshold.begin(), contact.threshold.end(), 0.);
-    if (parameters.initial_threshold == InitialThreshold::frictionless)
+    if (parameters.strategy == FrictionStrategy::nested &&
+        held_by_friction_pressure > 0.)
+      {
+        pcout << "   loop 1: only friction holds the body tangentially, so "
+                 "g^0 = F N / |Gamma_C| = F * "
+              << held_by_friction_pressure
+              << " (g^0 = 0 could not hold the tangential load)\n";
+        for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+          contact.threshold[s] =
+            contact.coefficient[s] * held_by_friction_pressure;
+      }
+    else if (parameters.initial_threshold == InitialThreshold::frictionless)
       {
         pcout << "   loop 1: g^0 = F l1 of the frictionless problem\n";
         contact.friction = false;

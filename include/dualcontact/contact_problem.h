@@ -142,7 +142,7 @@ namespace dualcontact
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
     void
     solve_contact(TrilinosWrappers::MPI::Vector &v);
-    void
+    double
     check_equilibrium() const;
     double
     net_load(const Tensor<1, dim> &direction) const;

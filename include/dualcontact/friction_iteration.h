@@ -31,14 +31,19 @@ namespace dualcontact
      *  - nested: g^{s+1} = F l1(u^s) after each converged Uzawa solve, until
      *    |g^{s+1} - g^s| <= tol |g^{s+1}|;
      *  - merged: g = F l1 after every Uzawa step, one loop.
-     * g^0 is zero, or F times the frictionless pressure. One record per
-     * loop-1 step is appended to `log` (loop "friction").
+     * g^0 is zero, or F times the frictionless pressure. If only friction
+     * holds the body tangentially under a tangential load, the problems with
+     * those thresholds have no solution; the caller then passes the mean
+     * contact pressure N / |Gamma_C| and the nested iteration starts from
+     * g^0 = F N / |Gamma_C|, whose capacity F N holds the load. One record
+     * per loop-1 step is appended to `log` (loop "friction").
      */
     ContactStatistics
     solve(const ContactSystem           &system,
           ContactSet<dim>               &contact,
           TrilinosWrappers::MPI::Vector &v,
-          std::vector<IterationRecord>  &log);
+          std::vector<IterationRecord>  &log,
+          const double                   held_by_friction_pressure = 0.);
 
   private:
     const FrictionParameters &parameters;
