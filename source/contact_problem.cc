@@ -377,31 +377,50 @@ namespace dualcontact
         // A sharper estimate of the zone's edges: near an edge of a smooth
         // contact the pressure vanishes like sqrt(distance), so l1^2 is
         // linear there; extrapolate it from the two outermost active nodes
-        // on each side to zero.
+        // on each side to zero, staying before the first separated node.
+        // Where the zone reaches the end of Gamma_C there is no such edge,
+        // and the outermost node is kept.
         std::vector<std::pair<double, double>> local;
         for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-          if (contact_set.l1[s] > 0.)
-            local.emplace_back(contact_set.nodes[s].position *
-                                 contact_set.tangent,
-                               contact_set.l1[s]);
-        std::vector<std::pair<double, double>> active;
+          local.emplace_back(contact_set.nodes[s].position *
+                               contact_set.tangent,
+                             contact_set.l1[s]);
+        std::vector<std::pair<double, double>> nodes; // (t, l1), all nodes
         for (const auto &part :
              Utilities::MPI::all_gather(mpi_communicator, local))
-          active.insert(active.end(), part.begin(), part.end());
-        std::sort(active.begin(), active.end());
+          nodes.insert(nodes.end(), part.begin(), part.end());
+        std::sort(nodes.begin(), nodes.end());
+        std::size_t first = 0, last = nodes.size();
+        while (first < nodes.size() && !(nodes[first].second > 0.))
+          ++first;
+        while (last > first && !(nodes[last - 1].second > 0.))
+          --last;
+        // edge beyond `outer` (active) toward `beyond` (separated)
         const auto edge = [](const std::pair<double, double> &outer,
-                             const std::pair<double, double> &inner) {
+                             const std::pair<double, double> &inner,
+                             const std::pair<double, double> &beyond) {
           const double p2_outer = outer.second * outer.second;
           const double p2_inner = inner.second * inner.second;
           if (!(p2_inner > p2_outer))
-            return outer.first; // not a square-root edge: keep the node
-          return outer.first +
-                 (outer.first - inner.first) * p2_outer / (p2_inner - p2_outer);
+            return outer.first;
+          const double t = outer.first + (outer.first - inner.first) *
+                                           p2_outer / (p2_inner - p2_outer);
+          return std::clamp(t,
+                            std::min(outer.first, beyond.first),
+                            std::max(outer.first, beyond.first));
         };
-        if (active.size() >= 4)
-          result.contact_edge_half_width =
-            0.5 * (edge(active.back(), active[active.size() - 2]) -
-                   edge(active.front(), active[1]));
+        if (last - first >= 2)
+          {
+            const double lower =
+              first > 0 ?
+                edge(nodes[first], nodes[first + 1], nodes[first - 1]) :
+                nodes[first].first;
+            const double upper =
+              last < nodes.size() ?
+                edge(nodes[last - 1], nodes[last - 2], nodes[last]) :
+                nodes[last - 1].first;
+            result.contact_edge_half_width = 0.5 * (upper - lower);
+          }
         else
           result.contact_edge_half_width = result.contact_half_width;
       }

@@ -90,6 +90,61 @@ namespace dualcontact
         p[d] = values[d];
       return p;
     }
+
+    /**
+     * The Gram matrix G_ij = int_{fixed} m_i.m_j + int_{normal fixed}
+     * (m_i.n)(m_j.n) of displacement modes m_i(x) over the constrained part
+     * of the boundary, summed over the ranks; `measure` gets that part's
+     * length (area). A mode is left free by the constraints iff G m = 0.
+     */
+    template <int dim, typename Mode>
+    FullMatrix<double>
+    constrained_gram(
+      const parallel::distributed::Triangulation<dim> &triangulation,
+      const std::set<types::boundary_id>              &fixed,
+      const std::set<types::boundary_id>              &slider,
+      const unsigned int                               n_modes,
+      const Mode                                      &mode,
+      double                                          &measure)
+    {
+      const QGauss<dim - 1> quadrature(2);
+      MappingQ1<dim>        mapping;
+      FE_Nothing<dim>       fe;
+      FEFaceValues<dim>     fe_face(mapping,
+                                fe,
+                                quadrature,
+                                update_quadrature_points |
+                                  update_normal_vectors | update_JxW_values);
+      FullMatrix<double>    gram(n_modes, n_modes);
+      measure = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && (fixed.count(face->boundary_id()) ||
+                                        slider.count(face->boundary_id())))
+              {
+                const bool all = fixed.count(face->boundary_id()) > 0;
+                fe_face.reinit(cell, face);
+                for (const unsigned int q : fe_face.quadrature_point_indices())
+                  {
+                    const Point<dim>     &x = fe_face.quadrature_point(q);
+                    const Tensor<1, dim> &n = fe_face.normal_vector(q);
+                    measure += fe_face.JxW(q);
+                    for (unsigned int i = 0; i < n_modes; ++i)
+                      for (unsigned int j = 0; j < n_modes; ++j)
+                        gram(i, j) +=
+                          fe_face.JxW(q) *
+                          (all ? mode(i, x) * mode(j, x) :
+                                 (mode(i, x) * n) * (mode(j, x) * n));
+                  }
+              }
+      const MPI_Comm comm = triangulation.get_communicator();
+      for (unsigned int i = 0; i < n_modes; ++i)
+        for (unsigned int j = 0; j < n_modes; ++j)
+          gram(i, j) = Utilities::MPI::sum(gram(i, j), comm);
+      measure = Utilities::MPI::sum(measure, comm);
+      return gram;
+    }
   } // namespace
 
   std::string
@@ -361,38 +416,15 @@ namespace dualcontact
     const Tensor<1, dim>                            &e,
     const parallel::distributed::Triangulation<dim> &triangulation) const
   {
-    const auto            fixed  = ids_with(BoundaryCondition::fixed);
-    const auto            slider = ids_with(BoundaryCondition::normal_fixed);
-    const QGauss<dim - 1> quadrature(2);
-    MappingQ1<dim>        mapping;
-    FE_Nothing<dim>       fe;
-    FEFaceValues<dim>     fe_face(mapping,
-                              fe,
-                              quadrature,
-                              update_normal_vectors | update_JxW_values);
-    // int_{fixed} |e|^2 + int_{slider} (e.n)^2, against the boundary measure
-    double held = 0, measure = 0;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            {
-              fe_face.reinit(cell, face);
-              const bool all    = fixed.count(face->boundary_id()) > 0;
-              const bool normal = slider.count(face->boundary_id()) > 0;
-              for (const unsigned int q : fe_face.quadrature_point_indices())
-                {
-                  measure += fe_face.JxW(q);
-                  if (all)
-                    held += fe_face.JxW(q) * (e * e);
-                  else if (normal)
-                    held += fe_face.JxW(q) *
-                            std::pow(e * fe_face.normal_vector(q), 2);
-                }
-            }
-    const MPI_Comm comm = triangulation.get_communicator();
-    return Utilities::MPI::sum(held, comm) <=
-           1e-12 * Utilities::MPI::sum(measure, comm);
+    double     measure = 0;
+    const auto gram    = constrained_gram(
+      triangulation,
+      ids_with(BoundaryCondition::fixed),
+      ids_with(BoundaryCondition::normal_fixed),
+      1,
+      [&e](const unsigned int, const Point<dim> &) { return e; },
+      measure);
+    return gram(0, 0) <= 1e-12 * measure;
   }
 
   template <int dim>
@@ -425,46 +457,14 @@ namespace dualcontact
       return m;
     };
 
-    // Gram matrix of the modes in the boundary constraints:
-    // G_ij = int_{fixed} m_i.m_j + int_{normal fixed} (m_i.n)(m_j.n)
-    const auto fixed  = ids_with(BoundaryCondition::fixed);
-    const auto slider = ids_with(BoundaryCondition::normal_fixed);
-
-    const QGauss<dim - 1> quadrature(2);
-    MappingQ1<dim>        mapping;
-    FE_Nothing<dim>       fe;
-    FEFaceValues<dim>     fe_face(mapping,
-                              fe,
-                              quadrature,
-                              update_quadrature_points | update_normal_vectors |
-                                update_JxW_values);
-    FullMatrix<double>    gram(n_modes, n_modes);
-    double                measure = 0;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && (fixed.count(face->boundary_id()) ||
-                                      slider.count(face->boundary_id())))
-            {
-              const bool all = fixed.count(face->boundary_id()) > 0;
-              fe_face.reinit(cell, face);
-              for (const unsigned int q : fe_face.quadrature_point_indices())
-                {
-                  const Point<dim>     &x = fe_face.quadrature_point(q);
-                  const Tensor<1, dim> &n = fe_face.normal_vector(q);
-                  measure += fe_face.JxW(q);
-                  for (unsigned int i = 0; i < n_modes; ++i)
-                    for (unsigned int j = 0; j < n_modes; ++j)
-                      gram(i, j) += fe_face.JxW(q) *
-                                    (all ? mode(i, x) * mode(j, x) :
-                                           (mode(i, x) * n) * (mode(j, x) * n));
-                }
-            }
-    const MPI_Comm comm = triangulation.get_communicator();
-    for (unsigned int i = 0; i < n_modes; ++i)
-      for (unsigned int j = 0; j < n_modes; ++j)
-        gram(i, j) = Utilities::MPI::sum(gram(i, j), comm);
-    measure = Utilities::MPI::sum(measure, comm);
+    double                   measure = 0;
+    const FullMatrix<double> gram =
+      constrained_gram(triangulation,
+                       ids_with(BoundaryCondition::fixed),
+                       ids_with(BoundaryCondition::normal_fixed),
+                       n_modes,
+                       mode,
+                       measure);
 
     unsigned int n_free = n_modes;
     if (measure > 0)

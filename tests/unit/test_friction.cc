@@ -34,10 +34,10 @@ namespace
   /** The friction law at every node, reduced over the ranks. */
   struct LawCheck
   {
-    double excess        = 0; // max (|l2| - g)^+ / max g
-    double threshold_gap = 0; // max |g - F l1| / max g (Coulomb)
+    double excess         = 0; // max (|l2| - g)^+ / max g
+    double threshold_gap  = 0; // max |g - F l1| / max g (Coulomb)
     double slip_alignment = 1; // min over slip nodes of l2.v_t / (|l2||v_t|)
-    double stick_slip    = 0; // max |v_t| at stick nodes / max |v_t|
+    double stick_slip     = 0; // max |v_t| at stick nodes / max |v_t|
     unsigned int n_stick = 0, n_slip = 0;
   };
 
@@ -47,15 +47,14 @@ namespace
     const ContactSet<2> &c = run.problem->contact();
     const auto          &v = run.problem->displacement();
     LawCheck             check;
-    double g_max = 0, vt_max = 0, vt_stick = 0;
+    double               g_max = 0, vt_max = 0, vt_stick = 0;
     for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
       {
         const double l2 = c.l2[s][0];
         const double vt = c.tangential_displacement(v, s)[0];
         g_max           = std::max(g_max, c.threshold[s]);
         vt_max          = std::max(vt_max, std::abs(vt));
-        check.excess =
-          std::max(check.excess, std::abs(l2) - c.threshold[s]);
+        check.excess    = std::max(check.excess, std::abs(l2) - c.threshold[s]);
         if (coulomb)
           check.threshold_gap =
             std::max(check.threshold_gap,
@@ -77,12 +76,14 @@ namespace
     const MPI_Comm comm = run.comm;
     g_max               = Utilities::MPI::max(g_max, comm);
     vt_max              = Utilities::MPI::max(vt_max, comm);
-    check.excess = std::max(0., Utilities::MPI::max(check.excess, comm)) / g_max;
-    check.threshold_gap = Utilities::MPI::max(check.threshold_gap, comm) / g_max;
+    check.excess =
+      std::max(0., Utilities::MPI::max(check.excess, comm)) / g_max;
+    check.threshold_gap =
+      Utilities::MPI::max(check.threshold_gap, comm) / g_max;
     check.slip_alignment = Utilities::MPI::min(check.slip_alignment, comm);
-    check.stick_slip = Utilities::MPI::max(vt_stick, comm) / vt_max;
-    check.n_stick    = Utilities::MPI::sum(check.n_stick, comm);
-    check.n_slip     = Utilities::MPI::sum(check.n_slip, comm);
+    check.stick_slip     = Utilities::MPI::max(vt_stick, comm) / vt_max;
+    check.n_stick        = Utilities::MPI::sum(check.n_stick, comm);
+    check.n_slip         = Utilities::MPI::sum(check.n_slip, comm);
     return check;
   }
 } // namespace
@@ -93,7 +94,7 @@ TEST_CASE("Sliding block: equilibrium, partial slip and the friction law at "
 {
   for (const std::string strategy : {"merged", "nested"})
     {
-      Run run("sliding_block.prm",
+      Run                run("sliding_block.prm",
               one_cycle + friction("  set Threshold iteration = " + strategy));
       const CycleResult &r = run.last();
       INFO(strategy << ": stick " << r.n_stick << ", slip " << r.n_slip
@@ -141,13 +142,12 @@ TEST_CASE("Hertz with friction: odd tangential traction, stick zone at the "
   Run rough("hertz_friction.prm", one_cycle);
 
   // (x, l2, status) of the contact nodes in contact, gathered
-  const ContactSet<2>                 &c = rough.problem->contact();
+  const ContactSet<2>               &c = rough.problem->contact();
   std::vector<std::array<double, 3>> local;
   for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
     if (c.l1[s] > 0.)
-      local.push_back({c.nodes[s].position[0],
-                       c.l2[s][0],
-                       static_cast<double>(c.status(s))});
+      local.push_back(
+        {c.nodes[s].position[0], c.l2[s][0], static_cast<double>(c.status(s))});
   std::vector<std::array<double, 3>> nodes;
   for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, local))
     nodes.insert(nodes.end(), part.begin(), part.end());
@@ -188,8 +188,9 @@ TEST_CASE("Hertz with friction: odd tangential traction, stick zone at the "
   // couples into the normal pressure: measured, the zone narrows by 2.5 %
   // on every mesh (and by 0.1 % for nu = 0.49, where beta -> 0).
   CHECK(std::abs(a_rough / a_free - 1.) <= 0.03);
-  CHECK(std::abs(rough.last().contact_force - frictionless.last().contact_force) <=
-        1e-8 * frictionless.last().contact_force);
+  CHECK(
+    std::abs(rough.last().contact_force - frictionless.last().contact_force) <=
+    1e-8 * frictionless.last().contact_force);
   const LawCheck law = check_law(rough, true);
   CHECK(law.excess <= 1e-8);
   CHECK(law.threshold_gap <= 1e-6);
@@ -199,12 +200,15 @@ TEST_CASE("The nested and the merged threshold iterations agree", "[friction]")
 {
   for (const std::string scene : {"paper_block.prm", "hertz_friction.prm"})
     {
-      Run merged(scene, one_cycle + friction("  set Threshold iteration = merged"));
-      Run nested(scene, one_cycle + friction("  set Threshold iteration = nested"));
-      unsigned int n_matched = 0;
-      const double difference =
-        max_pressure_difference(merged.pressures(), nested.pressures(), n_matched);
-      const double peak = merged.last().max_pressure;
+      Run          merged(scene,
+                 one_cycle + friction("  set Threshold iteration = merged"));
+      Run          nested(scene,
+                 one_cycle + friction("  set Threshold iteration = nested"));
+      unsigned int n_matched  = 0;
+      const double difference = max_pressure_difference(merged.pressures(),
+                                                        nested.pressures(),
+                                                        n_matched);
+      const double peak       = merged.last().max_pressure;
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         std::cout << scene << ": merged " << merged.last().uzawa_steps
                   << " Uzawa / " << merged.last().newton_steps << " Newton / "
@@ -212,8 +216,8 @@ TEST_CASE("The nested and the merged threshold iterations agree", "[friction]")
                   << nested.last().friction_steps << " loop-1 / "
                   << nested.last().uzawa_steps << " Uzawa / "
                   << nested.last().newton_steps << " Newton / "
-                  << nested.last().linear_iterations
-                  << " CG; max |dl1| / peak " << difference / peak << "\n";
+                  << nested.last().linear_iterations << " CG; max |dl1| / peak "
+                  << difference / peak << "\n";
       CHECK(n_matched == merged.last().n_contact_nodes);
       CHECK(difference <= 1e-5 * peak);
       CHECK(std::abs(merged.last().tangential_force -
@@ -224,8 +228,8 @@ TEST_CASE("The nested and the merged threshold iterations agree", "[friction]")
 
 TEST_CASE("Friction: one and several MPI ranks agree", "[friction][mpi]")
 {
-  Run world("sliding_block.prm", one_cycle);
-  Run alone("sliding_block.prm", one_cycle, MPI_COMM_SELF);
+  Run          world("sliding_block.prm", one_cycle);
+  Run          alone("sliding_block.prm", one_cycle, MPI_COMM_SELF);
   unsigned int n_matched = 0;
   double       difference =
     max_pressure_difference(world.pressures(), alone.pressures(), n_matched);
