@@ -94,6 +94,21 @@ namespace dualcontact_test
     return difference;
   }
 
+  /**
+   * The same scene solved on all ranks and on each rank alone: the largest
+   * pressure difference at matching nodes and the number of nodes matched,
+   * both reduced over MPI_COMM_WORLD (so every rank asserts the same).
+   */
+  inline std::pair<double, unsigned int>
+  compare_ranks(const Run &world, const Run &alone)
+  {
+    unsigned int n_matched = 0;
+    const double difference =
+      max_pressure_difference(world.pressures(), alone.pressures(), n_matched);
+    return {Utilities::MPI::max(difference, MPI_COMM_WORLD),
+            Utilities::MPI::min(n_matched, MPI_COMM_WORLD)};
+  }
+
 } // namespace dualcontact_test
 
 #endif
