@@ -1,5 +1,7 @@
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/distributed/grid_refinement.h>
+
 #include <deal.II/dofs/dof_accessor.h>
 #include <deal.II/dofs/dof_tools.h>
 
@@ -16,6 +18,7 @@
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/postprocess.h>
+#include <dualcontact/refinement.h>
 
 #include <cmath>
 #include <filesystem>
@@ -186,6 +189,8 @@ namespace dualcontact
   void
   ContactProblem<dim>::solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v)
   {
+    if (carried) // nested iteration: the coarse solution is a first guess
+      v = carried_v;
     elastic_solver.initialize(system_matrix);
     cycle_results.back().linear_iterations =
       elastic_solver.solve(system_matrix, v, system_rhs);
@@ -295,6 +300,9 @@ namespace dualcontact
     AssertThrow(contact_set.n_global_nodes() > 0,
                 ExcMessage("The contact boundary has no contact nodes."));
     const double held_by_friction_pressure = check_equilibrium();
+    // the net load toward the foundation, which the contact force balances
+    // when nothing else holds the body in that direction
+    result.normal_load = net_load(contact_set.normal);
 
     // r is relative to E / h_C, so that the Uzawa steps do not depend on
     // the units or on the mesh size (DESIGN.md §3).
@@ -305,21 +313,97 @@ namespace dualcontact
     pcout << "   contact: " << result.n_contact_nodes
           << " nodes, r = " << result.r << ", chi = " << result.chi << '\n';
 
-    // start from v = 0 with the prescribed boundary values, l1 = 0
-    v = 0;
-    constraints.distribute(v);
-
-    const ContactSystem     system{system_matrix,
+    result.n_hanging_contact = contact_set.n_hanging_nodes();
+    const ContactSystem system{system_matrix,
                                mass_matrix,
                                system_rhs,
                                homogeneous_constraints,
                                result.r,
                                result.chi};
-    const std::size_t       first      = iteration_log.size();
-    const ContactStatistics statistics = friction_iteration.solve(
-      system, contact_set, v, iteration_log, held_by_friction_pressure);
+
+    // For the comparison of nested iteration with a cold start: the same
+    // mesh solved from v = 0, l1 = l2 = 0 first (its log is not kept).
+    TrilinosWrappers::MPI::Vector v_cold;
+    ContactSet<dim>               cold_set;
+    result.warm_start = carried;
+    if (carried && parameters.refinement.compare_cold_start)
+      {
+        pcout << "   cold start, for comparison with nested iteration:\n";
+        cold_set = contact_set;
+        v_cold.reinit(locally_owned_dofs, mpi_communicator);
+        constraints.distribute(v_cold);
+        std::vector<IterationRecord> cold_log;
+        Timer                        timer(mpi_communicator, true);
+        const ContactStatistics      cold = friction_iteration.solve(
+          system, cold_set, v_cold, cold_log, held_by_friction_pressure);
+        timer.stop();
+        result.cold_uzawa_steps    = cold.uzawa_steps;
+        result.cold_newton_steps   = cold.newton_steps;
+        result.cold_friction_steps = cold.friction_steps;
+        result.cold_time_solve     = timer.wall_time();
+        pcout << "   nested start from the previous mesh:\n";
+      }
+
+    // Start from the previous mesh's solution (nested iteration), or from
+    // v = 0 with the prescribed boundary values and l1 = l2 = 0.
+    if (carried)
+      {
+        v = carried_v;
+        const auto [smallest_l1, excess] =
+          contact_set.read_fields(carried_multipliers, carried_threshold);
+        const double l1_max = std::max(carried_multipliers.linfty_norm(),
+                                       std::numeric_limits<double>::min());
+        const double g_max  = std::max(carried_threshold.linfty_norm(),
+                                      std::numeric_limits<double>::min());
+        result.carried_min_l1 =
+          Utilities::MPI::min(smallest_l1, mpi_communicator) / l1_max;
+        result.carried_max_excess =
+          Utilities::MPI::max(excess, mpi_communicator) / g_max;
+      }
+    else
+      v = 0;
+    constraints.distribute(v);
+
+    const std::size_t       first = iteration_log.size();
+    const ContactStatistics statistics =
+      friction_iteration.solve(system,
+                               contact_set,
+                               v,
+                               iteration_log,
+                               held_by_friction_pressure,
+                               carried);
     for (std::size_t i = first; i < iteration_log.size(); ++i)
       iteration_log[i].cycle = result.cycle;
+
+    if (v_cold.size() > 0)
+      {
+        // in the energy norm a(e, e) = e.(K - chi M)e, blind to the rigid
+        // motions that only the proximal term fixes (a semi-coercive scene
+        // keeps the one its start selects)
+        // (on the condensed matrices: over the unconstrained DoFs)
+        const auto energy = [&](TrilinosWrappers::MPI::Vector e) {
+          homogeneous_constraints.set_zero(e);
+          TrilinosWrappers::MPI::Vector Ke(e), Me(e);
+          system_matrix.vmult(Ke, e);
+          mass_matrix.vmult(Me, e);
+          return std::sqrt(std::max(e * Ke - result.chi * (e * Me), 0.));
+        };
+        TrilinosWrappers::MPI::Vector difference(v);
+        difference -= v_cold;
+        result.cold_difference_v = energy(difference) / energy(v_cold);
+        double sums[2]           = {0., 0.};
+        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+          {
+            const double m = contact_set.nodes[s].weight;
+            sums[0] += m * std::pow(contact_set.l1[s] - cold_set.l1[s], 2);
+            sums[1] += m * cold_set.l1[s] * cold_set.l1[s];
+          }
+        Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                            mpi_communicator,
+                            ArrayView<double>(sums, 2));
+        result.cold_difference_l1 =
+          sums[1] > 0. ? std::sqrt(sums[0] / sums[1]) : std::sqrt(sums[0]);
+      }
 
     if (parameters.solver.time_reference_solve)
       result.time_reference = uzawa_solver.time_reference_solve(
@@ -337,9 +421,9 @@ namespace dualcontact
     result.friction_steps    = statistics.friction_steps;
 
     // Figures of the contact zone: total force, peak pressure, half-width
-    // along t, and the error against an exact pressure (nodal quadrature).
+    // along t, and the L2 error against an exact pressure.
     const Function<dim> *exact = scene.exact_pressure();
-    double               force = 0, peak = 0, error2 = 0, norm2 = 0;
+    double               force = 0, peak = 0;
     double               t_min = std::numeric_limits<double>::max();
     double               t_max = -std::numeric_limits<double>::max();
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
@@ -353,12 +437,6 @@ namespace dualcontact
             const double t = node.position * contact_set.tangent;
             t_min          = std::min(t_min, t);
             t_max          = std::max(t_max, t);
-          }
-        if (exact != nullptr)
-          {
-            const double p = exact->value(node.position);
-            error2 += node.weight * (l1 - p) * (l1 - p);
-            norm2 += node.weight * p * p;
           }
       }
     result.contact_force = Utilities::MPI::sum(force, mpi_communicator);
@@ -425,9 +503,23 @@ namespace dualcontact
           result.contact_edge_half_width = result.contact_half_width;
       }
     if (exact != nullptr)
-      result.pressure_error =
-        std::sqrt(Utilities::MPI::sum(error2, mpi_communicator) /
-                  Utilities::MPI::sum(norm2, mpi_communicator));
+      {
+        TrilinosWrappers::MPI::Vector multipliers, threshold;
+        multiplier_fields(multipliers, threshold);
+        result.pressure_error =
+          compute_pressure_error(mapping,
+                                 dof_handler,
+                                 multipliers,
+                                 scene.ids_with(BoundaryCondition::contact),
+                                 *exact);
+      }
+    if (parameters.exact.contact_half_width > 0.)
+      result.half_width_error =
+        result.contact_edge_half_width / parameters.exact.contact_half_width -
+        1.;
+    if (parameters.exact.peak_pressure > 0.)
+      result.peak_pressure_error =
+        result.max_pressure / parameters.exact.peak_pressure - 1.;
   }
 
   template <int dim>
@@ -577,7 +669,11 @@ namespace dualcontact
            "l2_error,h1_error,l2_rate,h1_rate,time_setup,time_assembly,"
            "time_solve,time_output,time_reference,memory_mb,"
            "friction_steps,stick_nodes,slip_nodes,tangential_force,"
-           "contact_edge_half_width\n";
+           "contact_edge_half_width,half_width_error,peak_pressure_error,"
+           "hanging_contact_nodes,warm_start,cold_uzawa_steps,"
+           "cold_newton_steps,cold_friction_steps,cold_time_solve,"
+           "cold_difference_v,cold_difference_l1,time_refine,time_total,"
+           "carried_min_l1,carried_max_excess\n";
     csv << std::setprecision(10);
     for (const CycleResult &r : cycle_results)
       csv << r.cycle << ',' << r.n_cells << ',' << r.n_dofs << ','
@@ -590,7 +686,54 @@ namespace dualcontact
           << r.time_assembly << ',' << r.time_solve << ',' << r.time_output
           << ',' << r.time_reference << ',' << r.memory_mb << ','
           << r.friction_steps << ',' << r.n_stick << ',' << r.n_slip << ','
-          << r.tangential_force << ',' << r.contact_edge_half_width << '\n';
+          << r.tangential_force << ',' << r.contact_edge_half_width << ','
+          << r.half_width_error << ',' << r.peak_pressure_error << ','
+          << r.n_hanging_contact << ',' << r.warm_start << ','
+          << r.cold_uzawa_steps << ',' << r.cold_newton_steps << ','
+          << r.cold_friction_steps << ',' << r.cold_time_solve << ','
+          << r.cold_difference_v << ',' << r.cold_difference_l1 << ','
+          << r.time_refine << ',' << r.time_total << ',' << r.carried_min_l1
+          << ',' << r.carried_max_excess << '\n';
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_convergence_table() const
+  {
+    if (!scene.effects().contact)
+      return;
+    // one line per cycle: mesh, errors, iterations of each loop, wall times
+    const bool    friction = scene.effects().friction != FrictionLaw::none;
+    const auto    column   = [](const int w) { return std::setw(w); };
+    std::ostream &out      = pcout.get_stream();
+    if (!pcout.is_active())
+      return;
+    out << "\nConvergence table (" << to_string(parameters.refinement.strategy)
+        << " refinement"
+        << (parameters.refinement.nested_iteration ? ", nested iteration" :
+                                                     ", cold starts")
+        << "; errors relative; times in s):\n"
+        << "cycle    cells     DoFs  Gamma_C(hang)  p L2 err   a err     "
+           "p0 err   "
+        << (friction ? " loop1" : "")
+        << " Uzawa Newton     CG   refine  assemble    solve   total\n";
+    for (const CycleResult &r : cycle_results)
+      {
+        std::ostringstream nodes;
+        nodes << r.n_contact_nodes << "(" << r.n_hanging_contact << ")";
+        out << column(5) << r.cycle << column(9) << r.n_cells << column(9)
+            << r.n_dofs << column(15) << nodes.str() << std::scientific
+            << std::setprecision(2) << column(10) << r.pressure_error
+            << column(10) << r.half_width_error << column(10)
+            << r.peak_pressure_error << std::defaultfloat;
+        if (friction)
+          out << column(6) << r.friction_steps;
+        out << column(6) << r.uzawa_steps << column(7) << r.newton_steps
+            << column(7) << r.linear_iterations << std::fixed
+            << std::setprecision(3) << column(9) << r.time_refine << column(10)
+            << r.time_assembly << column(9) << r.time_solve << column(8)
+            << r.time_total << std::defaultfloat << '\n';
+      }
   }
 
   template <int dim>
@@ -618,9 +761,113 @@ namespace dualcontact
 
   template <int dim>
   void
+  ContactProblem<dim>::multiplier_fields(
+    TrilinosWrappers::MPI::Vector &multipliers,
+    TrilinosWrappers::MPI::Vector &threshold) const
+  {
+    // nodal values at the contact nodes, then at the hanging nodes on
+    // Gamma_C (interpolated from their masters, so l1 >= 0 and |l2| <= g
+    // hold there too), then ghosted
+    TrilinosWrappers::MPI::Vector owned_multipliers(locally_owned_dofs,
+                                                    mpi_communicator);
+    TrilinosWrappers::MPI::Vector owned_threshold(locally_owned_dofs,
+                                                  mpi_communicator);
+    contact_set.write_fields(owned_multipliers, owned_threshold);
+    hanging_node_constraints.distribute(owned_multipliers);
+    hanging_node_constraints.distribute(owned_threshold);
+    multipliers.reinit(locally_owned_dofs,
+                       locally_relevant_dofs,
+                       mpi_communicator);
+    threshold.reinit(locally_owned_dofs,
+                     locally_relevant_dofs,
+                     mpi_communicator);
+    multipliers = owned_multipliers;
+    threshold   = owned_threshold;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::mark_cells_for_refinement()
+  {
+    const RefinementParameters &refinement = parameters.refinement;
+    if (refinement.strategy == RefinementStrategy::global)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            cell->set_refine_flag();
+        return;
+      }
+
+    Vector<float> indicator = kelly_indicator(mapping, dof_handler, solution);
+    if (refinement.strategy == RefinementStrategy::contact &&
+        scene.effects().contact)
+      {
+        TrilinosWrappers::MPI::Vector multipliers, threshold;
+        multiplier_fields(multipliers, threshold);
+        add_contact_indicator(mapping,
+                              dof_handler,
+                              solution,
+                              multipliers,
+                              contact_set,
+                              scene.ids_with(BoundaryCondition::contact),
+                              parameters.material,
+                              refinement.contact_weight,
+                              indicator);
+      }
+    parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+      triangulation,
+      indicator,
+      refinement.refine_fraction,
+      refinement.coarsen_fraction);
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::refine_mesh()
   {
-    triangulation.refine_global(1);
+    mark_cells_for_refinement();
+
+    // Nested iteration: v and the multiplier fields go with the cells.
+    // The inputs must live until the refinement is executed.
+    carried = false;
+    TrilinosWrappers::MPI::Vector multipliers, threshold;
+    if (parameters.refinement.nested_iteration)
+      {
+        std::vector<const TrilinosWrappers::MPI::Vector *> fields = {&solution};
+        if (scene.effects().contact)
+          {
+            multiplier_fields(multipliers, threshold);
+            fields.push_back(&multipliers);
+            fields.push_back(&threshold);
+          }
+        transfer = std::make_unique<parallel::distributed::SolutionTransfer<
+          dim,
+          TrilinosWrappers::MPI::Vector>>(dof_handler);
+        triangulation.prepare_coarsening_and_refinement();
+        transfer->prepare_for_coarsening_and_refinement(fields);
+      }
+    triangulation.execute_coarsening_and_refinement();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::interpolate_carried_fields()
+  {
+    if (!transfer)
+      return;
+    carried_v.reinit(locally_owned_dofs, mpi_communicator);
+    std::vector<TrilinosWrappers::MPI::Vector *> fields = {&carried_v};
+    if (scene.effects().contact)
+      {
+        carried_multipliers.reinit(locally_owned_dofs, mpi_communicator);
+        carried_threshold.reinit(locally_owned_dofs, mpi_communicator);
+        fields.push_back(&carried_multipliers);
+        fields.push_back(&carried_threshold);
+      }
+    transfer->interpolate(fields);
+    transfer.reset();
+    constraints.distribute(carried_v);
+    carried = true;
   }
 
   template <int dim>
@@ -652,22 +899,35 @@ namespace dualcontact
     for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
          ++cycle)
       {
-        if (cycle > 0)
-          timed("refine mesh", [&] { refine_mesh(); });
+        const double time_refine =
+          cycle > 0 ? timed("refine mesh", [&] { refine_mesh(); }) : 0.;
 
         cycle_results.emplace_back();
         CycleResult &result = cycle_results.back();
         result.cycle        = cycle;
         result.time_setup   = timed("setup system", [&] { setup_system(); });
+        result.time_refine  = time_refine + timed("refine mesh", [&] {
+                               interpolate_carried_fields();
+                             });
         result.n_cells      = triangulation.n_global_active_cells();
         result.n_dofs       = dof_handler.n_dofs();
         pcout << "Cycle " << cycle << ": " << result.n_cells << " cells, "
-              << result.n_dofs << " DoFs" << seconds(result.time_setup) << '\n';
+              << result.n_dofs << " DoFs" << seconds(result.time_setup);
+        if (cycle > 0)
+          pcout << ", refined (" << to_string(parameters.refinement.strategy)
+                << (!carried ? "" :
+                    scene.effects().contact ?
+                               ", v and multipliers carried over" :
+                               ", v carried over")
+                << ")" << seconds(result.time_refine);
+        pcout << '\n';
 
         result.time_assembly = timed("assemble", [&] { assemble_system(); });
         pcout << "   assembled A and b" << seconds(result.time_assembly)
               << '\n';
+        // the time of the cold start for comparison is reported apart
         result.time_solve = timed("solve", [&] { solve(); });
+        result.time_solve -= result.cold_time_solve;
         if (scene.effects().contact)
           pcout << "   contact solved: " << result.uzawa_steps
                 << " Uzawa steps, " << result.newton_steps << " Newton steps, "
@@ -676,12 +936,31 @@ namespace dualcontact
                 << " of " << result.n_contact_nodes << " nodes in contact"
                 << seconds(result.time_solve) << '\n'
                 << std::setprecision(8) << "   total contact force "
-                << result.contact_force << ", peak pressure "
+                << result.contact_force << " (net load toward the foundation "
+                << result.normal_load << "), peak pressure "
                 << result.max_pressure << ", contact half-width "
                 << result.contact_half_width << " (nodes), "
                 << result.contact_edge_half_width << " (edges extrapolated)";
         if (scene.exact_pressure() != nullptr)
           pcout << ", pressure error (rel. L2) " << result.pressure_error;
+        if (parameters.exact.contact_half_width > 0.)
+          pcout << ", half-width error " << result.half_width_error;
+        if (parameters.exact.peak_pressure > 0.)
+          pcout << ", peak error " << result.peak_pressure_error;
+        if (result.n_hanging_contact > 0)
+          pcout << "\n   " << result.n_hanging_contact
+                << " hanging nodes on Gamma_C (no contact condition of their "
+                   "own)";
+        if (result.cold_uzawa_steps > 0)
+          pcout << "\n   nested iteration against a cold start: Uzawa "
+                << result.uzawa_steps << " vs " << result.cold_uzawa_steps
+                << ", Newton " << result.newton_steps << " vs "
+                << result.cold_newton_steps << ", loop 1 "
+                << result.friction_steps << " vs " << result.cold_friction_steps
+                << ", time " << result.time_solve << " s vs "
+                << result.cold_time_solve << " s; solutions differ by "
+                << result.cold_difference_v << " (v, energy norm), "
+                << result.cold_difference_l1 << " (l1)";
         if (scene.effects().friction != FrictionLaw::none)
           pcout << "\n   friction: " << result.n_stick << " stick, "
                 << result.n_slip << " slip nodes, total tangential force "
@@ -735,10 +1014,15 @@ namespace dualcontact
             MPI_Barrier(mpi_communicator);
           }
         result.time_output = timed("output", [&] { output_results(cycle); });
+        result.time_total =
+          (cycle > 0 ? cycle_results[cycle - 1].time_total : 0.) +
+          result.time_refine + result.time_setup + result.time_assembly +
+          result.time_solve + result.time_output;
         write_cycle_table();
         write_iteration_table();
       }
 
+    print_convergence_table();
     if (scene.exact_displacement() != nullptr)
       {
         pcout << "\nConvergence (rates for h halved per cycle):\n"

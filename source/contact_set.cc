@@ -94,11 +94,16 @@ namespace dualcontact
     weights.compress(VectorOperation::add);
 
     nodes.clear();
+    types::global_dof_index hanging = 0;
     for (auto &[key, node] : candidates)
       {
-        if (!owned.is_element(key) ||
-            hanging_node_constraints.is_constrained(key))
+        if (!owned.is_element(key))
           continue;
+        if (hanging_node_constraints.is_constrained(key))
+          {
+            ++hanging;
+            continue;
+          }
         bool any_free = false;
         for (unsigned int c = 0; c < dim; ++c)
           any_free |= !all_constraints.is_constrained(node.dofs[c]);
@@ -114,13 +119,13 @@ namespace dualcontact
     // Friction data at the nodes: F (Coulomb) or g (given), never negative.
     const FrictionLaw law = scene.effects().friction;
     friction              = law != FrictionLaw::none;
+    coulomb               = law == FrictionLaw::coulomb;
     l2.assign(nodes.size(), Tensor<1, dim - 1>());
     threshold.assign(nodes.size(), 0.);
     coefficient.assign(nodes.size(), 0.);
     if (friction)
       {
-        const bool coulomb  = law == FrictionLaw::coulomb;
-        double     smallest = 0.;
+        double smallest = 0.;
         for (unsigned int s = 0; s < nodes.size(); ++s)
           {
             const double value =
@@ -135,11 +140,58 @@ namespace dualcontact
                            exit_invalid_value);
       }
     n_global = Utilities::MPI::sum<types::global_dof_index>(nodes.size(), comm);
-    h_min_   = Utilities::MPI::min(h_min, comm);
+    n_hanging            = Utilities::MPI::sum(hanging, comm);
+    h_min_               = Utilities::MPI::min(h_min, comm);
     double local_measure = 0;
     for (const auto &node : nodes)
       local_measure += node.weight;
     measure_ = Utilities::MPI::sum(local_measure, comm);
+  }
+
+  template <int dim>
+  void
+  ContactSet<dim>::write_fields(
+    TrilinosWrappers::MPI::Vector &multipliers,
+    TrilinosWrappers::MPI::Vector &threshold_field) const
+  {
+    multipliers     = 0.;
+    threshold_field = 0.;
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      {
+        multipliers[nodes[s].dofs[0]] = l1[s];
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          multipliers[nodes[s].dofs[k + 1]] = l2[s][k];
+        threshold_field[nodes[s].dofs[0]] = threshold[s];
+      }
+    multipliers.compress(VectorOperation::insert);
+    threshold_field.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  ContactSet<dim>::read_fields(
+    const TrilinosWrappers::MPI::Vector &multipliers,
+    const TrilinosWrappers::MPI::Vector &threshold_field)
+  {
+    double smallest_l1 = std::numeric_limits<double>::max();
+    double excess      = -std::numeric_limits<double>::max();
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      {
+        const double raw = multipliers[nodes[s].dofs[0]];
+        smallest_l1      = std::min(smallest_l1, raw);
+        l1[s]            = std::max(raw, 0.);
+        if (!friction)
+          continue;
+        if (coulomb)
+          threshold[s] = std::max(threshold_field[nodes[s].dofs[0]], 0.);
+        Tensor<1, dim - 1> t;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          t[k] = multipliers[nodes[s].dofs[k + 1]];
+        const double norm = t.norm();
+        excess            = std::max(excess, norm - threshold[s]);
+        l2[s]             = norm > threshold[s] ? t * (threshold[s] / norm) : t;
+      }
+    return {smallest_l1, excess};
   }
 
   template class ContactSet<2>;

@@ -42,7 +42,8 @@ namespace dualcontact
                                 ContactSet<dim>               &contact,
                                 TrilinosWrappers::MPI::Vector &v,
                                 std::vector<IterationRecord>  &log,
-                                const double held_by_friction_pressure)
+                                const double held_by_friction_pressure,
+                                const bool   warm_start)
   {
     const bool coulomb =
       contact.friction && parameters.law == FrictionLaw::coulomb;
@@ -52,10 +53,12 @@ namespace dualcontact
     const MPI_Comm    comm = v.get_mpi_communicator();
     ContactStatistics total;
 
-    // g^0: zero, or F times the pressure of the frictionless problem
-    std::fill(contact.threshold.begin(), contact.threshold.end(), 0.);
-    if (parameters.strategy == FrictionStrategy::nested &&
-        held_by_friction_pressure > 0.)
+    // g^0: carried from the previous mesh, zero, or F times the pressure
+    // of the frictionless problem
+    if (warm_start)
+      pcout << "   loop 1: g^0 carried from the previous mesh\n";
+    else if (parameters.strategy == FrictionStrategy::nested &&
+             held_by_friction_pressure > 0.)
       {
         pcout << "   loop 1: only friction holds the body tangentially, so "
                  "g^0 = F N / |Gamma_C| = F * "
@@ -74,6 +77,8 @@ namespace dualcontact
         for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
           contact.threshold[s] = contact.coefficient[s] * contact.l1[s];
       }
+    else
+      std::fill(contact.threshold.begin(), contact.threshold.end(), 0.);
 
     if (parameters.strategy == FrictionStrategy::merged)
       {

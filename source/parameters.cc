@@ -158,6 +158,21 @@ namespace dualcontact
     return "";
   }
 
+  std::string
+  to_string(const RefinementStrategy strategy)
+  {
+    switch (strategy)
+      {
+        case RefinementStrategy::global:
+          return "global";
+        case RefinementStrategy::kelly:
+          return "kelly";
+        case RefinementStrategy::contact:
+          return "contact";
+      }
+    return "";
+  }
+
   bool
   is_zero_expression(const std::string &expression)
   {
@@ -675,11 +690,57 @@ namespace dualcontact
                       Patterns::Integer(1, 30),
                       "Number of meshes solved on; each after the first is "
                       "the previous one refined [-].");
-    prm.declare_entry("Strategy",
-                      "global",
-                      Patterns::Selection("global"),
-                      "How the mesh is refined between cycles: 'global' halves "
-                      "h everywhere (nested meshes, as in the source method).");
+    prm.declare_entry(
+      "Strategy",
+      "global",
+      Patterns::Selection("global|kelly|contact"),
+      "How the mesh is refined between cycles; every mesh is the previous "
+      "one refined (nested meshes). 'global' halves h everywhere, as the "
+      "source method does. 'kelly' refines (and coarsens) fixed fractions of "
+      "the cells ranked by deal.II's Kelly estimator, the jump of the "
+      "displacement gradient across faces. 'contact' adds to Kelly's "
+      "indicator a term on Gamma_C: the residual of the contact tractions, "
+      "h_F/E^2 int_F |sigma(u_h) n + l1 n + l2 t|^2 (n the outward normal, "
+      "t the tangent), which is large where "
+      "the discrete tractions disagree with the multipliers: the edges of "
+      "the contact zone and the stick/slip boundary.");
+    prm.declare_entry("Refine fraction",
+                      "0.3",
+                      Patterns::Double(0., 1.),
+                      "'kelly' and 'contact': the fraction of the cells, "
+                      "those with the largest indicators, refined per cycle "
+                      "[-].");
+    prm.declare_entry("Coarsen fraction",
+                      "0",
+                      Patterns::Double(0., 1.),
+                      "'kelly' and 'contact': the fraction of the cells, "
+                      "those with the smallest indicators, coarsened per "
+                      "cycle [-]. Refine + coarsen fractions must not exceed "
+                      "1.");
+    prm.declare_entry(
+      "Contact indicator weight",
+      "1",
+      Patterns::Double(0.),
+      "'contact': the weight of the Gamma_C term against Kelly's volume "
+      "term [-]. Both are measured in strain^2 * length, so the weight has no "
+      "units; 0 gives 'kelly'.");
+    prm.declare_entry(
+      "Nested iteration",
+      "true",
+      Patterns::Bool(),
+      "Carry the displacement v (by interpolation) and the multipliers l1, "
+      "l2 and the threshold g (by interpolation of their nodal values, then "
+      "projected so that l1 >= 0 and |l2| <= g) from each mesh to the next, "
+      "and start the solver there. false: every mesh starts cold, from v = 0 "
+      "and l1 = l2 = 0.");
+    prm.declare_entry(
+      "Compare with cold start",
+      "false",
+      Patterns::Bool(),
+      "With nested iteration: also solve each refined mesh from a cold "
+      "start, before the nested solve, and report the Uzawa, loop-1 and "
+      "Newton steps and the time saved, and the difference of the two "
+      "solutions (columns cold_* of cycles.csv). Doubles the cost.");
     prm.leave_subsection();
   }
 
@@ -689,8 +750,20 @@ namespace dualcontact
     prm.enter_subsection("Refinement");
     initial_global_refinement = prm.get_integer("Initial global refinement");
     n_cycles                  = prm.get_integer("Number of cycles");
-    strategy                  = RefinementStrategy::global;
+    const std::string name    = prm.get("Strategy");
+    strategy                  = name == "kelly"   ? RefinementStrategy::kelly :
+                                name == "contact" ? RefinementStrategy::contact :
+                                                    RefinementStrategy::global;
+    refine_fraction           = prm.get_double("Refine fraction");
+    coarsen_fraction          = prm.get_double("Coarsen fraction");
+    contact_weight            = prm.get_double("Contact indicator weight");
+    nested_iteration          = prm.get_bool("Nested iteration");
+    compare_cold_start        = prm.get_bool("Compare with cold start");
     prm.leave_subsection();
+    if (refine_fraction + coarsen_fraction > 1.)
+      throw InputError("The entries <Refinement/Refine fraction> and "
+                       "<Refinement/Coarsen fraction> add up to more than 1.",
+                       exit_invalid_value);
   }
 
   // ------------------------------------------------------------ Output
@@ -749,8 +822,21 @@ namespace dualcontact
       "If known, the exact contact pressure p = -sigma_n on the contact "
       "boundary [stress], an expression in x, y (z) with the constants pi, "
       "E, nu, lambda, mu (functions such as sqrt, max may be used); the "
-      "relative L2 error of l1 on Gamma_C is then reported per cycle. "
+      "relative L2 error on Gamma_C of l1 (interpolated between the contact nodes) is then reported per cycle. "
       "Empty: none is known.");
+    prm.declare_entry(
+      "Contact half-width",
+      "0",
+      Patterns::Double(0.),
+      "If known, the exact half-width a of the contact zone [length] (2D); "
+      "the relative error of the computed half-width (edges extrapolated) is "
+      "then reported per cycle. 0: not known.");
+    prm.declare_entry("Peak pressure",
+                      "0",
+                      Patterns::Double(0.),
+                      "If known, the exact largest contact pressure p0 "
+                      "[stress]; the relative error of max l1 is then "
+                      "reported per cycle. 0: not known.");
     prm.leave_subsection();
   }
 
@@ -758,8 +844,10 @@ namespace dualcontact
   ExactSolutionParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Exact solution");
-    displacement     = Utilities::trim(prm.get("Displacement"));
-    contact_pressure = Utilities::trim(prm.get("Contact pressure"));
+    displacement       = Utilities::trim(prm.get("Displacement"));
+    contact_pressure   = Utilities::trim(prm.get("Contact pressure"));
+    contact_half_width = prm.get_double("Contact half-width");
+    peak_pressure      = prm.get_double("Peak pressure");
     prm.leave_subsection();
   }
 

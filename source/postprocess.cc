@@ -1,7 +1,10 @@
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/distributed/tria_base.h>
+
+#include <deal.II/fe/fe_values.h>
 
 #include <deal.II/numerics/vector_tools.h>
 
@@ -107,6 +110,58 @@ namespace dualcontact
 
   template class StressPostprocessor<2>;
   template class StressPostprocessor<3>;
+  template <int dim>
+  double
+  compute_pressure_error(const Mapping<dim>                  &mapping,
+                         const DoFHandler<dim>               &dof_handler,
+                         const TrilinosWrappers::MPI::Vector &multipliers,
+                         const std::set<types::boundary_id>  &contact_ids,
+                         const Function<dim>                 &exact)
+  {
+    const QGauss<dim - 1> quadrature(dof_handler.get_fe().degree + 3);
+    FEFaceValues<dim>     fe_face(mapping,
+                              dof_handler.get_fe(),
+                              quadrature,
+                              update_values | update_quadrature_points |
+                                update_JxW_values);
+    const FEValuesExtractors::Scalar l1(0);
+    std::vector<double>              values(quadrature.size());
+    double                           sums[2] = {0., 0.}; // error^2, norm^2
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()))
+            {
+              fe_face.reinit(cell, f);
+              fe_face[l1].get_function_values(multipliers, values);
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  const double p = exact.value(fe_face.quadrature_point(q));
+                  sums[0] += std::pow(values[q] - p, 2) * fe_face.JxW(q);
+                  sums[1] += p * p * fe_face.JxW(q);
+                }
+            }
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                        comm,
+                        ArrayView<double>(sums, 2));
+    return sums[1] > 0. ? std::sqrt(sums[0] / sums[1]) : std::sqrt(sums[0]);
+  }
+
+  template double
+  compute_pressure_error<2>(const Mapping<2> &,
+                            const DoFHandler<2> &,
+                            const TrilinosWrappers::MPI::Vector &,
+                            const std::set<types::boundary_id> &,
+                            const Function<2> &);
+  template double
+  compute_pressure_error<3>(const Mapping<3> &,
+                            const DoFHandler<3> &,
+                            const TrilinosWrappers::MPI::Vector &,
+                            const std::set<types::boundary_id> &,
+                            const Function<3> &);
+
   template ErrorNorms
   compute_error_norms<2>(const Mapping<2> &,
                          const DoFHandler<2> &,

@@ -1,3 +1,4 @@
+#include <deal.II/base/function.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -41,7 +42,12 @@ namespace dualcontact
         {"mu", material.mu()}};
       const std::string variables = dim == 2 ? "x,y" : "x,y,z";
 
+      // a vector of zeros of either dimension, such as the default "0; 0",
+      // is zero in 2D and 3D alike
       const auto n_given = Utilities::split_string_list(expression, ';').size();
+      if (n_components > 1 && n_given > 1 && n_given <= 3 &&
+          is_zero_expression(expression))
+        return std::make_unique<Functions::ZeroFunction<dim>>(n_components);
       if (n_given != n_components)
         throw InputError("The entry <" + entry + "> needs " +
                            std::to_string(n_components) +

@@ -8,6 +8,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -27,6 +28,7 @@
 #include <dualcontact/uzawa_solver.h>
 
 #include <iostream>
+#include <memory>
 #include <vector>
 
 namespace dualcontact
@@ -46,31 +48,52 @@ namespace dualcontact
     double                   l2_rate           = 0.; // log2(e_{k-1}/e_k)
     double                   h1_rate           = 0.;
     // contact (zero without a contact boundary)
-    types::global_dof_index n_contact_nodes    = 0;
-    types::global_dof_index n_active           = 0;
-    unsigned int            uzawa_steps        = 0;
-    unsigned int            newton_steps       = 0;
-    unsigned int            amg_setups         = 0;
-    unsigned int            friction_steps     = 0; // loop 1 steps
-    types::global_dof_index n_stick            = 0;
-    types::global_dof_index n_slip             = 0;
-    double                  tangential_force   = 0.; // |sum_s m_s l2_s|
-    double                  uzawa_rate         = 0.; // observed contraction
-    double                  l1_error_estimate  = 0.; // relative, from the rate
-    double                  contact_force      = 0.; // sum_s m_s l1_s
-    double                  max_pressure       = 0.; // max_s l1_s
-    double                  contact_half_width = 0.; // 2D: half the extent
-                                                     // of the active nodes
-                                                     // along t
+    types::global_dof_index n_contact_nodes   = 0;
+    types::global_dof_index n_active          = 0;
+    unsigned int            uzawa_steps       = 0;
+    unsigned int            newton_steps      = 0;
+    unsigned int            amg_setups        = 0;
+    unsigned int            friction_steps    = 0; // loop 1 steps
+    types::global_dof_index n_stick           = 0;
+    types::global_dof_index n_slip            = 0;
+    double                  tangential_force  = 0.; // |sum_s m_s l2_s|
+    double                  uzawa_rate        = 0.; // observed contraction
+    double                  l1_error_estimate = 0.; // relative, from the rate
+    double                  contact_force     = 0.; // sum_s m_s l1_s
+    double normal_load        = 0.;      // net load along -n (toward Gamma_C)
+    double max_pressure       = 0.;      // max_s l1_s
+    double contact_half_width = 0.;      // 2D: half the extent
+                                         // of the active nodes
+                                         // along t
     double contact_edge_half_width = 0.; // 2D: the same, with the edges
                                          // extrapolated (l1^2 linear)
-    double pressure_error = 0.;          // relative, nodal L2
-    double r              = 0.;          // augmentation used
-    double chi            = 0.;          // proximal weight used
-    double time_setup     = 0.;          // wall times [s]
-    double time_assembly  = 0.;
-    double time_solve     = 0.;
-    double time_output    = 0.;
+    double pressure_error = 0.;          // relative L2 on Gamma_C
+    // relative errors against Exact solution/Contact half-width and Peak
+    // pressure (0 where not known)
+    double                  half_width_error    = 0.;
+    double                  peak_pressure_error = 0.;
+    types::global_dof_index n_hanging_contact   = 0;     // hanging on Gamma_C
+    bool                    warm_start          = false; // nested iteration
+    // the carried multipliers on this mesh before their projection: the
+    // smallest l1 and the largest |l2| - g, relative to the largest
+    // multiplier and the largest g
+    double carried_min_l1     = 0.;
+    double carried_max_excess = 0.;
+    // Refinement/Compare with cold start: the same mesh solved from zero
+    unsigned int cold_uzawa_steps    = 0;
+    unsigned int cold_newton_steps   = 0;
+    unsigned int cold_friction_steps = 0;
+    double       cold_time_solve     = 0.; // [s], not in time_solve
+    double       cold_difference_v   = 0.; // |v - v_cold|_a / |v_cold|_a
+    double       cold_difference_l1  = 0.; // the same for l1 (weighted)
+    double       r                   = 0.; // augmentation used
+    double       chi                 = 0.; // proximal weight used
+    double       time_setup          = 0.; // wall times [s]
+    double       time_assembly       = 0.;
+    double       time_solve          = 0.;
+    double       time_output         = 0.;
+    double       time_refine = 0.; // marking, refinement, transfer (to here)
+    double       time_total  = 0.; // all phases of all cycles up to here
     // benchmarks (Solver/Time a reference linear solve)
     double       time_reference       = 0.; // AMG + CG of one solve
     unsigned int reference_iterations = 0;
@@ -157,6 +180,15 @@ namespace dualcontact
     void
     refine_mesh();
     void
+    mark_cells_for_refinement();
+    void
+    multiplier_fields(TrilinosWrappers::MPI::Vector &multipliers,
+                      TrilinosWrappers::MPI::Vector &threshold) const;
+    void
+    interpolate_carried_fields();
+    void
+    print_convergence_table() const;
+    void
     print_header() const;
 
     // MPI and screen
@@ -197,6 +229,16 @@ namespace dualcontact
     UzawaSolver<dim>             uzawa_solver;
     FrictionIteration<dim>       friction_iteration;
     std::vector<IterationRecord> iteration_log;
+
+    // nested iteration: the transfer of v, the multipliers and the
+    // threshold across a refinement, and what it carried to the new mesh
+    std::unique_ptr<parallel::distributed::
+                      SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>
+                                  transfer;
+    bool                          carried = false;
+    TrilinosWrappers::MPI::Vector carried_v;
+    TrilinosWrappers::MPI::Vector carried_multipliers;
+    TrilinosWrappers::MPI::Vector carried_threshold;
 
     // per-cycle figures, and the (cycle, file) list of the .pvd record
     std::vector<CycleResult>                    cycle_results;

@@ -17,6 +17,7 @@
 #include <dualcontact/scene.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace dualcontact
@@ -100,6 +101,31 @@ namespace dualcontact
       return 2;
     }
 
+    /**
+     * The multipliers as nodal fields of the displacement element, for the
+     * transfer to a refined mesh and for error indicators: at the DoFs of
+     * each contact node, `multipliers` holds l1 in component 0 and l2 (in
+     * the tangent basis) in components 1 .. dim-1, and `threshold_field`
+     * holds g in component 0; zero elsewhere. Owned vectors, of the
+     * DoFHandler this set was set up on; the caller fills hanging nodes
+     * and ghosts.
+     */
+    void
+    write_fields(TrilinosWrappers::MPI::Vector &multipliers,
+                 TrilinosWrappers::MPI::Vector &threshold_field) const;
+
+    /**
+     * The reverse of write_fields, at the nodes of this set (owned
+     * entries), projected onto the admissible set: l1 >= 0, g >= 0 and
+     * |l2| <= g. g is read only under Coulomb's law (a given threshold is
+     * the scene's), l2 only with friction. Returns, over this rank's
+     * nodes and before the projection, the smallest l1 and the largest
+     * |l2| - g: how far the fields read were from admissible.
+     */
+    std::pair<double, double>
+    read_fields(const TrilinosWrappers::MPI::Vector &multipliers,
+                const TrilinosWrappers::MPI::Vector &threshold_field);
+
     /** Number of contact nodes on this rank and on all ranks. */
     unsigned int
     n_local_nodes() const
@@ -110,6 +136,16 @@ namespace dualcontact
     n_global_nodes() const
     {
       return n_global;
+    }
+
+    /**
+     * Support points on Gamma_C that hang (all ranks): they carry no
+     * contact condition of their own, their weight is their masters'.
+     */
+    types::global_dof_index
+    n_hanging_nodes() const
+    {
+      return n_hanging;
     }
 
     /** Smallest diameter of a face on Gamma_C (over all ranks). */
@@ -141,14 +177,16 @@ namespace dualcontact
      * for Coulomb, the coefficient F at every local node.
      */
     bool                            friction = false;
+    bool                            coulomb  = false; // g = F l1
     std::vector<Tensor<1, dim - 1>> l2;
     std::vector<double>             threshold;
     std::vector<double>             coefficient;
 
   private:
-    types::global_dof_index n_global = 0;
-    double                  h_min_   = 0.;
-    double                  measure_ = 0.;
+    types::global_dof_index n_global  = 0;
+    types::global_dof_index n_hanging = 0;
+    double                  h_min_    = 0.;
+    double                  measure_  = 0.;
   };
 } // namespace dualcontact
 

@@ -37,13 +37,16 @@ namespace dualcontact
      * contact pressure N / |Gamma_C| and the nested iteration starts from
      * g^0 = F N / |Gamma_C|, whose capacity F N holds the load. One record
      * per loop-1 step is appended to `log` (loop "friction").
+     * With `warm_start` (nested iteration) the thresholds in `contact`,
+     * carried from the previous mesh, are g^0.
      */
     ContactStatistics
     solve(const ContactSystem           &system,
           ContactSet<dim>               &contact,
           TrilinosWrappers::MPI::Vector &v,
           std::vector<IterationRecord>  &log,
-          const double                   held_by_friction_pressure = 0.);
+          const double                   held_by_friction_pressure = 0.,
+          const bool                     warm_start                = false);
 
   private:
     const FrictionParameters &parameters;

@@ -56,13 +56,17 @@ namespace dualcontact
 
   enum class RefinementStrategy
   {
-    global
+    global, // every cell refined: h halved per cycle
+    kelly,  // Kelly's estimator, fixed fractions of the cells
+    contact // Kelly plus a residual of the contact tractions on Gamma_C
   };
 
   std::string
   to_string(const BoundaryCondition condition);
   std::string
   to_string(const GeometryType type);
+  std::string
+  to_string(const RefinementStrategy strategy);
 
   /** Geometry and initial mesh. */
   struct GeometryParameters
@@ -198,6 +202,13 @@ namespace dualcontact
     unsigned int       initial_global_refinement = 0;
     unsigned int       n_cycles                  = 1;
     RefinementStrategy strategy                  = RefinementStrategy::global;
+    double             refine_fraction           = 0.3;
+    double             coarsen_fraction          = 0.;
+    double             contact_weight            = 1.;
+    // carry v, l1, l2 and g from one mesh to the next (nested iteration)
+    bool nested_iteration = true;
+    // also solve every refined mesh from a cold start, for comparison
+    bool compare_cold_start = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -221,8 +232,10 @@ namespace dualcontact
   /** An exact solution, if the scene has one: errors are then reported. */
   struct ExactSolutionParameters
   {
-    std::string displacement;     // empty: none known
-    std::string contact_pressure; // empty: none known
+    std::string displacement;            // empty: none known
+    std::string contact_pressure;        // empty: none known
+    double      contact_half_width = 0.; // 0: not known
+    double      peak_pressure      = 0.; // 0: not known
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -13,6 +13,8 @@
 
 #include <dualcontact/parameters.h>
 
+#include <set>
+
 namespace dualcontact
 {
   using namespace dealii;
@@ -65,6 +67,22 @@ namespace dualcontact
                       const DoFHandler<dim>               &dof_handler,
                       const TrilinosWrappers::MPI::Vector &solution,
                       const Function<dim>                 *exact);
+
+  /**
+   * The relative L2 error on Gamma_C (the faces with `contact_ids`) of the
+   * contact pressure l1_h, the interpolant of the nodal multipliers (the
+   * ghosted field of ContactSet::write_fields, hanging nodes filled),
+   * against `exact`: |l1_h - p|_L2 / |p|_L2, with a Gauss rule of degree + 3
+   * points per face, so that the square-root edge of a Hertz pressure is
+   * integrated well.
+   */
+  template <int dim>
+  double
+  compute_pressure_error(const Mapping<dim>                  &mapping,
+                         const DoFHandler<dim>               &dof_handler,
+                         const TrilinosWrappers::MPI::Vector &multipliers,
+                         const std::set<types::boundary_id>  &contact_ids,
+                         const Function<dim>                 &exact);
 } // namespace dualcontact
 
 #endif

@@ -18,33 +18,39 @@ namespace dualcontact_test
 {
   using namespace dualcontact;
 
-  /** A scene from prm/, with overrides, solved on `comm`. */
-  struct Run
+  /**
+   * A scene from prm/ (or, with an empty name, the overrides alone), with
+   * overrides, solved on `comm`.
+   */
+  template <int dim>
+  struct SceneRun
   {
-    Parameters                         parameters;
-    std::ostringstream                 screen;
-    std::unique_ptr<ContactProblem<2>> problem;
-    std::string                        directory;
-    MPI_Comm                           comm;
+    Parameters                           parameters;
+    std::ostringstream                   screen;
+    std::unique_ptr<ContactProblem<dim>> problem;
+    std::string                          directory;
+    MPI_Comm                             comm;
 
-    Run(const std::string &scene,
-        const std::string &overrides,
-        const MPI_Comm     comm = MPI_COMM_WORLD)
+    SceneRun(const std::string &scene,
+             const std::string &overrides,
+             const MPI_Comm     comm = MPI_COMM_WORLD)
         : comm(comm)
     {
       static unsigned int counter = 0;
-      directory =
-        temporary_directory("contact" + std::to_string(counter++), comm);
+      directory = temporary_directory("contact" + std::to_string(dim) + "d" +
+                                        std::to_string(counter++),
+                                      comm);
       parameters.read_string(
-        read_text(test_file("../prm/" + scene)) + overrides +
-        "\nsubsection Output\n  set Directory = " + directory +
+        (scene.empty() ? std::string() :
+                         read_text(test_file("../prm/" + scene))) +
+        overrides + "\nsubsection Output\n  set Directory = " + directory +
         "\n  set Write vtu = false\n  set Print timing = "
         "false\nend\n");
-      problem = std::make_unique<ContactProblem<2>>(parameters, comm, screen);
+      problem = std::make_unique<ContactProblem<dim>>(parameters, comm, screen);
       problem->run();
     }
 
-    ~Run()
+    ~SceneRun()
     {
       remove_directory(directory, comm);
     }
@@ -59,7 +65,7 @@ namespace dualcontact_test
     std::vector<std::pair<double, double>>
     pressures() const
     {
-      const ContactSet<2>                   &contact = problem->contact();
+      const ContactSet<dim>                 &contact = problem->contact();
       std::vector<std::pair<double, double>> local;
       for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
         local.emplace_back(contact.nodes[s].position * contact.tangent,
@@ -71,6 +77,8 @@ namespace dualcontact_test
       return all;
     }
   };
+
+  using Run = SceneRun<2>;
 
   /** Largest |l1_a - l1_b| over nodes at the same x (matched within 1e-9). */
   inline double
