@@ -564,6 +564,15 @@ namespace dualcontact
     subdomain = static_cast<float>(triangulation.locally_owned_subdomain());
     data_out.add_data_vector(subdomain, "subdomain");
 
+    // what the adaptive strategies rank the cells by (the cells refined
+    // next are those with the largest values)
+    Vector<float> indicator;
+    if (parameters.refinement.strategy != RefinementStrategy::global)
+      {
+        indicator = refinement_indicator();
+        data_out.add_data_vector(indicator, "refinement_indicator");
+      }
+
     // Nodal fields on Gamma_C, on a scalar copy of the element: contact
     // pressure l1, gap g0 - u_n, status (-1 not a contact node, 0 separated,
     // 1 in contact and sticking, 2 slipping), tangential traction l2,
@@ -786,18 +795,10 @@ namespace dualcontact
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::mark_cells_for_refinement()
+  Vector<float>
+  ContactProblem<dim>::refinement_indicator() const
   {
     const RefinementParameters &refinement = parameters.refinement;
-    if (refinement.strategy == RefinementStrategy::global)
-      {
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
-            cell->set_refine_flag();
-        return;
-      }
-
     Vector<float> indicator = kelly_indicator(mapping, dof_handler, solution);
     if (refinement.strategy == RefinementStrategy::contact &&
         scene.effects().contact)
@@ -814,6 +815,22 @@ namespace dualcontact
                               refinement.contact_weight,
                               indicator);
       }
+    return indicator;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::mark_cells_for_refinement()
+  {
+    const RefinementParameters &refinement = parameters.refinement;
+    if (refinement.strategy == RefinementStrategy::global)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            cell->set_refine_flag();
+        return;
+      }
+    const Vector<float> indicator = refinement_indicator();
     parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
       triangulation,
       indicator,

@@ -179,6 +179,8 @@ namespace dualcontact
     write_iteration_table() const;
     void
     refine_mesh();
+    Vector<float>
+    refinement_indicator() const;
     void
     mark_cells_for_refinement();
     void
