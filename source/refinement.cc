@@ -16,8 +16,7 @@ namespace dualcontact
                   const DoFHandler<dim>               &dof_handler,
                   const TrilinosWrappers::MPI::Vector &solution)
   {
-    Vector<float> indicator(
-      dof_handler.get_triangulation().n_active_cells());
+    Vector<float> indicator(dof_handler.get_triangulation().n_active_cells());
     KellyErrorEstimator<dim>::estimate(
       mapping,
       dof_handler,
@@ -40,14 +39,14 @@ namespace dualcontact
                         const double                         weight,
                         Vector<float>                       &indicator)
   {
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
-    const QGauss<dim - 1>     quadrature(fe.degree + 1);
-    FEFaceValues<dim>         fe_face(mapping,
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
+    const QGauss<dim - 1>                quadrature(fe.degree + 1);
+    FEFaceValues<dim>                    fe_face(mapping,
                               fe,
                               quadrature,
                               update_values | update_gradients |
                                 update_normal_vectors | update_JxW_values);
-    const FEValuesExtractors::Vector   displacement(0);
+    const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
     std::vector<Tensor<1, dim>>          lambda(quadrature.size());
     const double                         E      = material.youngs_modulus;
@@ -63,16 +62,14 @@ namespace dualcontact
                 contact_ids.count(cell->face(f)->boundary_id()))
               {
                 fe_face.reinit(cell, f);
-                fe_face[displacement].get_function_symmetric_gradients(
-                  solution, strain);
-                fe_face[displacement].get_function_values(multipliers,
-                                                          lambda);
+                fe_face[displacement].get_function_symmetric_gradients(solution,
+                                                                       strain);
+                fe_face[displacement].get_function_values(multipliers, lambda);
                 double integral = 0.;
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   {
                     const SymmetricTensor<2, dim> stress =
-                      lame_l * trace(strain[q]) *
-                        unit_symmetric_tensor<dim>() +
+                      lame_l * trace(strain[q]) * unit_symmetric_tensor<dim>() +
                       2. * lame_m * strain[q];
                     // lambda[q]: (l1, l2_1, .., l2_{dim-1}) interpolated
                     Tensor<1, dim> residual =

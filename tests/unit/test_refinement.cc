@@ -60,11 +60,11 @@ namespace
           std::max(check.complementarity, c.l1[s] * std::abs(gap));
         l1_max = std::max(l1_max, c.l1[s]);
       }
-    const double v_max  = v.linfty_norm();
-    l1_max              = Utilities::MPI::max(l1_max, run.comm);
-    check.smallest_l1   = Utilities::MPI::min(check.smallest_l1, run.comm);
-    check.penetration   = Utilities::MPI::max(check.penetration, run.comm) /
-                        v_max;
+    const double v_max = v.linfty_norm();
+    l1_max             = Utilities::MPI::max(l1_max, run.comm);
+    check.smallest_l1  = Utilities::MPI::min(check.smallest_l1, run.comm);
+    check.penetration =
+      Utilities::MPI::max(check.penetration, run.comm) / v_max;
     check.complementarity =
       Utilities::MPI::max(check.complementarity, run.comm) / (l1_max * v_max);
     return check;
@@ -126,7 +126,7 @@ TEST_CASE("Adaptive Hertz ('contact' indicator): the pressure error falls "
           "every cycle, the contact conditions hold at every node",
           "[refinement]")
 {
-  Run run("hertz_adaptive.prm", refinement("set Number of cycles = 5"));
+  Run         run("hertz_adaptive.prm", refinement("set Number of cycles = 5"));
   const auto &results = run.problem->results();
   REQUIRE(results.size() == 5);
   for (std::size_t k = 1; k < results.size(); ++k)
@@ -160,8 +160,8 @@ TEST_CASE("3D adaptive Hertz (ball on a plane): hanging nodes on Gamma_C, "
             << results[1].n_contact_nodes << " contact nodes, "
             << results[1].n_hanging_contact
             << " hanging nodes on Gamma_C, pressure error "
-            << results[0].pressure_error << " -> "
-            << results[1].pressure_error << std::endl;
+            << results[0].pressure_error << " -> " << results[1].pressure_error
+            << std::endl;
   CHECK(results[1].n_hanging_contact > 0);
   CHECK(results[1].pressure_error < results[0].pressure_error);
   CHECK(std::abs(results[1].peak_pressure_error) < 0.05);
@@ -174,10 +174,10 @@ TEST_CASE("Carried multipliers are admissible on the refined (and coarsened) "
           "mesh: l1 >= 0, |l2| <= g",
           "[refinement][friction]")
 {
-  Run run("hertz_friction.prm",
+  Run         run("hertz_friction.prm",
           refinement("set Number of cycles = 3\n"
-                     "set Strategy = contact\n"
-                     "set Coarsen fraction = 0.05"));
+                             "set Strategy = contact\n"
+                             "set Coarsen fraction = 0.05"));
   const auto &results = run.problem->results();
   REQUIRE(results.size() == 3);
   for (std::size_t k = 1; k < results.size(); ++k)
@@ -198,10 +198,10 @@ TEST_CASE("Nested iteration reaches the cold start's solution on the same "
           "mesh in fewer Uzawa and Newton steps",
           "[refinement][friction]")
 {
-  Run run("hertz_friction.prm",
+  Run         run("hertz_friction.prm",
           refinement("set Number of cycles = 3\n"
-                     "set Strategy = contact\n"
-                     "set Compare with cold start = true"));
+                             "set Strategy = contact\n"
+                             "set Compare with cold start = true"));
   const auto &results = run.problem->results();
   REQUIRE(results.size() == 3);
   for (std::size_t k = 1; k < results.size(); ++k)
@@ -227,7 +227,7 @@ TEST_CASE("Adaptive refinement ('contact') reaches the pressure error of the "
   Run global("hertz_adaptive.prm",
              refinement("set Number of cycles = 4\nset Strategy = global"));
   Run adaptive("hertz_adaptive.prm", refinement("set Number of cycles = 5"));
-  const CycleResult &finest = global.last();
+  const CycleResult &finest  = global.last();
   const CycleResult *reached = nullptr;
   for (const CycleResult &r : adaptive.problem->results())
     if (r.pressure_error <= finest.pressure_error)
@@ -236,10 +236,10 @@ TEST_CASE("Adaptive refinement ('contact') reaches the pressure error of the "
         break;
       }
   REQUIRE(reached != nullptr);
-  std::cout << "global: " << finest.pressure_error << " with "
-            << finest.n_dofs << " DoFs; contact: " << reached->pressure_error
-            << " with " << reached->n_dofs << " DoFs (cycle "
-            << reached->cycle << ")" << std::endl;
+  std::cout << "global: " << finest.pressure_error << " with " << finest.n_dofs
+            << " DoFs; contact: " << reached->pressure_error << " with "
+            << reached->n_dofs << " DoFs (cycle " << reached->cycle << ")"
+            << std::endl;
   CHECK(reached->n_dofs < finest.n_dofs / 2);
 }
 
