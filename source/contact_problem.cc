@@ -155,6 +155,17 @@ namespace dualcontact
                         system_matrix,
                         system_rhs,
                         contact ? &mass_matrix : nullptr);
+    // An expression may evaluate to NaN or infinity somewhere (sqrt of a
+    // negative number, log of zero): stop here, naming the suspects, rather
+    // than solve with it.
+    if (!std::isfinite(system_rhs.l2_norm()))
+      throw InputError(
+        "The loads are not finite numbers at some point of the body or its "
+        "boundary (NaN or infinity): check the expressions of <Loads/Body "
+        "force>, <Boundary conditions/Tractions> and <Boundary "
+        "conditions/Displacements> over the whole body (e.g. sqrt or log of "
+        "a negative number).",
+        exit_invalid_value);
     if (contact)
       {
         // The Uzawa steps minimise with the proximal term (chi/2)|v - v^k|^2

@@ -4,8 +4,10 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameters.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -121,6 +123,27 @@ namespace dualcontact
           message.find("doesn't match the pattern") != std::string::npos)
         code = exit_invalid_value;
       throw InputError("Error in " + source + ": " + message, code);
+    }
+
+    // True if the text of a parameter file has at least one 'set' or
+    // 'include' line (comments, blank lines, 'subsection' and 'end' are no
+    // entries).
+    bool
+    has_entries(const std::string &text)
+    {
+      std::istringstream lines(text);
+      std::string        line;
+      while (std::getline(lines, line))
+        {
+          line = Utilities::trim(line.substr(0, line.find('#')));
+          for (const std::string keyword : {"set", "include"})
+            if (line.compare(0, keyword.size(), keyword) == 0 &&
+                (line.size() == keyword.size() ||
+                 std::isspace(
+                   static_cast<unsigned char>(line[keyword.size()]))))
+              return true;
+        }
+      return false;
     }
   } // namespace
 
@@ -891,16 +914,26 @@ namespace dualcontact
     if (!in)
       throw InputError("Cannot open the parameter file <" + filename + ">.",
                        exit_cannot_read_file);
-    ParameterHandler prm;
+    const std::string  content((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+    std::istringstream text(content);
+    ParameterHandler   prm;
     declare_parameters(prm);
     try
       {
-        prm.parse_input(in, filename);
+        prm.parse_input(text, filename);
       }
     catch (const ExceptionBase &exc)
       {
         rethrow_parse_error(exc, "parameter file <" + filename + ">");
       }
+    // A file without a single 'set' (or 'include') line is empty, or only
+    // comments: every entry would keep its default, which is never meant.
+    if (!has_entries(content))
+      throw InputError("The parameter file <" + filename +
+                         "> has no entries (no 'set' line): it is empty or "
+                         "holds only comments.",
+                       exit_cannot_read_file);
     parse_parameters(prm);
   }
 
