@@ -7,6 +7,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <dualcontact/elasticity.h>
+#include <dualcontact/input_error.h>
 
 #include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
@@ -270,8 +271,8 @@ namespace dualcontact
                     ExcMessage("CG did not converge in " +
                                std::to_string(exc.last_step) +
                                " iterations (residual " +
-                               std::to_string(exc.last_residual) + ", wanted " +
-                               std::to_string(relative * rhs_norm) +
+                               format_number(exc.last_residual) + ", wanted " +
+                               format_number(relative * rhs_norm) +
                                "). Raise <Solver/Maximum linear iterations> or "
                                "check that the scene holds the body."));
       }

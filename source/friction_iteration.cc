@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dualcontact/friction_iteration.h>
+#include <dualcontact/input_error.h>
 
 #include <cmath>
 #include <iomanip>
@@ -146,7 +147,7 @@ namespace dualcontact
                            std::to_string(parameters.max_steps) +
                            " steps (<Friction/Maximum threshold steps>); the "
                            "last relative change of g was " +
-                           std::to_string(total.change_g) +
+                           format_number(total.change_g) +
                            ". Coulomb solutions are unique only for small "
                            "friction coefficients; try a smaller F or the "
                            "merged strategy."));

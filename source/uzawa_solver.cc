@@ -5,8 +5,10 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <dualcontact/input_error.h>
 #include <dualcontact/uzawa_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -199,7 +201,9 @@ namespace dualcontact
       parameters.newton_tolerance_factor * tolerance;
 
     ContactStatistics statistics;
-    amg_valid = false; // a new system: build the preconditioner afresh
+    amg_valid         = false; // a new system: build the preconditioner afresh
+    roundoff_reported = false;
+    roundoff_floor    = 0.;
 
     TrilinosWrappers::MPI::Vector   v_previous(v);
     std::vector<double>             z;
@@ -382,6 +386,11 @@ namespace dualcontact
     const Tensor<1, dim>                &n = contact.normal;
 
     double target = 0.; // absolute gradient tolerance of this Uzawa step
+    // for the round-off test: the previous step's statuses, step length
+    // and gradient, and how many steps in a row have stalled
+    std::vector<unsigned char> previous_status(n_nodes);
+    double                     previous_alpha = 0., previous_gradient = 0.;
+    unsigned int               stalled = 0;
     for (unsigned int j = 0;; ++j)
       {
         Timer timer(comm, true);
@@ -441,24 +450,54 @@ namespace dualcontact
         // or when it is below the final tolerance.
         const double gradient_norm = gradient.l2_norm();
         if (j == 0)
-          target = std::max(final_tolerance * reference,
-                            std::min(envelope * reference,
-                                     parameters.inner_tolerance_factor *
-                                       gradient_norm));
-        if (gradient_norm <= target)
+          target = std::max(
+            {final_tolerance * reference,
+             std::min(envelope * reference,
+                      parameters.inner_tolerance_factor * gradient_norm),
+             1.5 * roundoff_floor * reference});
+        // With the node statuses fixed M_k is quadratic, and a full Newton
+        // step ends at its minimiser up to the CG tolerance. If full steps
+        // at unchanged statuses stop reducing the gradient, it has reached
+        // the round-off floor of K (which rises with lambda/mu, i.e. as nu
+        // -> 1/2): accept that floor when it is within 10^3 of the target.
+        bool unchanged = j > 0;
+        for (unsigned int s = 0; unchanged && s < n_nodes; ++s)
+          unchanged = status[s] == previous_status[s];
+        unchanged           = Utilities::MPI::min(unchanged ? 1 : 0, comm) == 1;
+        stalled             = (unchanged && previous_alpha == 1. &&
+                   gradient_norm > 0.5 * previous_gradient) ?
+                                stalled + 1 :
+                                0;
+        const bool at_floor = stalled >= 3 && gradient_norm <= 1e3 * target;
+        if (at_floor)
+          roundoff_floor = std::max(roundoff_floor, gradient_norm / reference);
+        if (at_floor && !roundoff_reported)
+          {
+            pcout << "   Newton: the gradient stagnates at "
+                  << format_number(gradient_norm / reference)
+                  << " |b| (round-off of this matrix) above the target "
+                  << format_number(target / reference)
+                  << " |b|; accepted, and the later Uzawa steps of this "
+                     "solve stop there at once"
+                  << std::endl;
+            roundoff_reported = true;
+          }
+        if (gradient_norm <= target || at_floor)
           {
             timer.stop();
             record.time = timer.wall_time();
             log.push_back(record);
             break;
           }
+        previous_status   = status;
+        previous_gradient = gradient_norm;
         AssertThrow(j < parameters.max_newton_steps,
                     ExcMessage(
                       "Newton's method (loop 3) did not converge in " +
                       std::to_string(parameters.max_newton_steps) +
                       " steps in Uzawa step " + std::to_string(uzawa_step) +
-                      " (relative gradient " + std::to_string(record.gradient) +
-                      ", wanted " + std::to_string(target / reference) +
+                      " (relative gradient " + format_number(record.gradient) +
+                      ", wanted " + format_number(target / reference) +
                       "). Raise <Solver/Maximum Newton steps>."));
 
         // Generalised Hessian H = K + contact terms.
@@ -595,6 +634,7 @@ namespace dualcontact
           }
         v.add(alpha, direction);
         record.step_length = alpha;
+        previous_alpha     = alpha;
 
         timer.stop();
         record.time = timer.wall_time();

@@ -3,6 +3,8 @@
 #ifndef dualcontact_input_error_h
 #define dualcontact_input_error_h
 
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -39,6 +41,18 @@ namespace dualcontact
 
     const ExitCode code;
   };
+
+  /**
+   * A number for a message, in scientific notation with three significant
+   * digits (std::to_string writes 1e-10 as 0.000000).
+   */
+  inline std::string
+  format_number(const double x)
+  {
+    std::ostringstream s;
+    s << std::scientific << std::setprecision(2) << x;
+    return s.str();
+  }
 } // namespace dualcontact
 
 #endif

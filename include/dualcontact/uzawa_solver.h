@@ -171,6 +171,10 @@ namespace dualcontact
     bool                           amg_valid                 = false;
     unsigned int                   cg_iterations_after_setup = 0;
     unsigned int                   last_cg_iterations        = 0;
+    // whether loop 3 has reported stopping at round-off in this solve
+    bool roundoff_reported = false;
+    // the round-off floor of the gradient found in this solve, over |b|
+    double roundoff_floor = 0.;
   };
 } // namespace dualcontact
 
