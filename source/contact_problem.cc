@@ -401,8 +401,10 @@ namespace dualcontact
         };
         TrilinosWrappers::MPI::Vector difference(v);
         difference -= v_cold;
-        result.cold_difference_v = energy(difference) / energy(v_cold);
-        double sums[2]           = {0., 0.};
+        const double reference = energy(v_cold);
+        result.cold_difference_v =
+          reference > 0. ? energy(difference) / reference : energy(difference);
+        double sums[2] = {0., 0.};
         for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
           {
             const double m = contact_set.nodes[s].weight;
@@ -431,6 +433,13 @@ namespace dualcontact
     result.n_slip            = statistics.n_slip;
     result.friction_steps    = statistics.friction_steps;
 
+    measure_contact_zone(result);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::measure_contact_zone(CycleResult &result) const
+  {
     // Figures of the contact zone: total force, peak pressure, half-width
     // along t, and the L2 error against an exact pressure.
     const Function<dim> *exact = scene.exact_pressure();

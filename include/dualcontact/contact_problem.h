@@ -165,6 +165,8 @@ namespace dualcontact
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
     void
     solve_contact(TrilinosWrappers::MPI::Vector &v);
+    void
+    measure_contact_zone(CycleResult &result) const;
     double
     check_equilibrium() const;
     double
