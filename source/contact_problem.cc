@@ -750,11 +750,24 @@ namespace dualcontact
       {
         std::ostringstream nodes;
         nodes << r.n_contact_nodes << "(" << r.n_hanging_contact << ")";
+        // an error is '-' where the scene gives nothing to compare with
+        const auto error = [](const bool known, const double value) {
+          std::ostringstream s;
+          if (known)
+            s << std::scientific << std::setprecision(2) << value;
+          else
+            s << '-';
+          return s.str();
+        };
         out << column(5) << r.cycle << column(9) << r.n_cells << column(9)
-            << r.n_dofs << column(15) << nodes.str() << std::scientific
-            << std::setprecision(2) << column(10) << r.pressure_error
-            << column(10) << r.half_width_error << column(10)
-            << r.peak_pressure_error << std::defaultfloat;
+            << r.n_dofs << column(15) << nodes.str() << column(10)
+            << error(scene.exact_pressure() != nullptr, r.pressure_error)
+            << column(10)
+            << error(parameters.exact.contact_half_width > 0.,
+                     r.half_width_error)
+            << column(10)
+            << error(parameters.exact.peak_pressure > 0.,
+                     r.peak_pressure_error);
         if (friction)
           out << column(6) << r.friction_steps;
         out << column(6) << r.uzawa_steps << column(7) << r.newton_steps
