@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -79,6 +80,58 @@ namespace dualcontact_test
   };
 
   using Run = SceneRun<2>;
+
+  /** Largest |v_i| over all entries; infinity if one is not finite. */
+  inline double
+  max_entry(const TrilinosWrappers::MPI::Vector &v, const MPI_Comm comm)
+  {
+    double largest = 0;
+    for (const auto i : v.locally_owned_elements())
+      largest = std::isfinite(v[i]) ? std::max(largest, std::abs(v[i])) :
+                                      std::numeric_limits<double>::infinity();
+    return Utilities::MPI::max(largest, comm);
+  }
+
+  /**
+   * The contact conditions at every contact node of the last cycle: l1 >= 0,
+   * the penetration max(v_n - g0) and the complementarity l1 |g0 - v_n|,
+   * relative to the largest displacement (and the largest l1).
+   */
+  struct Conditions
+  {
+    double smallest_l1     = 0;
+    double penetration     = 0;
+    double complementarity = 0;
+  };
+
+  template <int dim>
+  Conditions
+  check_conditions(const SceneRun<dim> &run)
+  {
+    const ContactSet<dim> &c = run.problem->contact();
+    const auto            &v = run.problem->displacement();
+    Conditions             check;
+    double                 l1_max = 0;
+    check.smallest_l1             = std::numeric_limits<double>::max();
+    for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
+      {
+        const double gap  = c.nodes[s].gap0 - c.normal_displacement(v, s);
+        check.smallest_l1 = std::min(check.smallest_l1, c.l1[s]);
+        check.penetration = std::max(check.penetration, -gap);
+        check.complementarity =
+          std::max(check.complementarity, c.l1[s] * std::abs(gap));
+        l1_max = std::max(l1_max, c.l1[s]);
+      }
+    const double v_max = max_entry(v, run.comm);
+    l1_max             = Utilities::MPI::max(l1_max, run.comm);
+    check.smallest_l1  = Utilities::MPI::min(check.smallest_l1, run.comm);
+    check.penetration =
+      Utilities::MPI::max(check.penetration, run.comm) / v_max;
+    check.complementarity =
+      Utilities::MPI::max(check.complementarity, run.comm) / (l1_max * v_max);
+    return check;
+  }
+
 
   /** Largest |l1_a - l1_b| over nodes at the same x (matched within 1e-9). */
   inline double

@@ -39,17 +39,6 @@ namespace
     return Utilities::MPI::max(difference, comm);
   }
 
-  /** Largest |v_i| over all entries; infinity if one is not finite. */
-  double
-  max_entry(const TrilinosWrappers::MPI::Vector &v, const MPI_Comm comm)
-  {
-    double largest = 0;
-    for (const auto i : v.locally_owned_elements())
-      largest = std::isfinite(v[i]) ? std::max(largest, std::abs(v[i])) :
-                                      std::numeric_limits<double>::infinity();
-    return Utilities::MPI::max(largest, comm);
-  }
-
   /**
    * The multipliers of the last cycle over all ranks: the largest |l1|,
    * the smallest l1, the largest |l2|, and whether all of them are finite.
@@ -85,47 +74,6 @@ namespace
     m.largest_l2  = Utilities::MPI::max(m.largest_l2, run.comm);
     m.finite      = Utilities::MPI::min(int(m.finite), run.comm) == 1;
     return m;
-  }
-
-  /**
-   * The contact conditions at every contact node of the last cycle (the
-   * idea of test_refinement.cc): l1 >= 0, the penetration max(v_n - g0) and
-   * the complementarity l1 |g0 - v_n|, relative to the largest displacement
-   * (and the largest l1).
-   */
-  struct Conditions
-  {
-    double smallest_l1     = 0;
-    double penetration     = 0;
-    double complementarity = 0;
-  };
-
-  template <int dim>
-  Conditions
-  check_conditions(const SceneRun<dim> &run)
-  {
-    const ContactSet<dim> &c = run.problem->contact();
-    const auto            &v = run.problem->displacement();
-    Conditions             check;
-    double                 l1_max = 0;
-    check.smallest_l1             = std::numeric_limits<double>::max();
-    for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
-      {
-        const double gap  = c.nodes[s].gap0 - c.normal_displacement(v, s);
-        check.smallest_l1 = std::min(check.smallest_l1, c.l1[s]);
-        check.penetration = std::max(check.penetration, -gap);
-        check.complementarity =
-          std::max(check.complementarity, c.l1[s] * std::abs(gap));
-        l1_max = std::max(l1_max, c.l1[s]);
-      }
-    const double v_max = max_entry(v, run.comm);
-    l1_max             = Utilities::MPI::max(l1_max, run.comm);
-    check.smallest_l1  = Utilities::MPI::min(check.smallest_l1, run.comm);
-    check.penetration =
-      Utilities::MPI::max(check.penetration, run.comm) / v_max;
-    check.complementarity =
-      Utilities::MPI::max(check.complementarity, run.comm) / (l1_max * v_max);
-    return check;
   }
 
   bool
