@@ -315,10 +315,13 @@ namespace dualcontact
     // when nothing else holds the body in that direction
     result.normal_load = net_load(contact_set.normal);
 
-    // r is relative to E / h_C, so that the Uzawa steps do not depend on
-    // the units or on the mesh size (DESIGN.md §3).
+    // r is relative to (lambda + 2 mu) / h_C, so that the Uzawa steps do
+    // not depend on the units or on the mesh size (DESIGN.md §3); the
+    // P-wave modulus lambda + 2 mu rather than E, because it follows the
+    // stiffness of a nearly incompressible (locked) material, for which
+    // r_rel E / h_C is far too small (doc/robustness.md §3).
     result.r = parameters.solver.augmentation *
-               parameters.material.youngs_modulus /
+               (parameters.material.lambda() + 2. * parameters.material.mu()) /
                contact_set.min_face_diameter();
     result.n_contact_nodes = contact_set.n_global_nodes();
     pcout << "   contact: " << result.n_contact_nodes

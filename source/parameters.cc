@@ -580,9 +580,12 @@ namespace dualcontact
       "10",
       Patterns::Double(0.),
       "r_rel [-], > 0: the augmentation parameter of the modified Lagrangian "
-      "is r = r_rel E / h_C [stress/length], with h_C the smallest face "
-      "diameter on the contact boundary. Any r > 0 converges; larger r "
-      "means fewer Uzawa steps and harder Newton problems.");
+      "is r = r_rel (lambda + 2 mu) / h_C [stress/length], with h_C the "
+      "smallest face diameter on the contact boundary and lambda + 2 mu the "
+      "P-wave modulus (E (1 - nu) / ((1 + nu) (1 - 2 nu)); 1.35 E at nu = "
+      "0.3), which follows the stiffness of nearly incompressible materials. "
+      "Any r > 0 converges; larger r means fewer Uzawa steps and harder "
+      "Newton problems.");
     prm.declare_entry(
       "Proximal parameter",
       "1e-3",

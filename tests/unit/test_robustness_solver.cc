@@ -528,7 +528,7 @@ TEST_CASE("Hertz with friction and the paper block in N-mm-MPa, N-m-Pa and "
                           "  set Tractions = 0: 0.02; 0, 3: 0.005; -0.01")}});
 }
 
-TEST_CASE("Nearly incompressible Hertz (nu = 0.49, 0.499, 0.4999): converges, "
+TEST_CASE("Nearly incompressible Hertz (nu = 0.49 ... 0.49999): converges, "
           "finite, the contact force balances the load",
           "[robustness][solver]")
 {
@@ -538,17 +538,15 @@ TEST_CASE("Nearly incompressible Hertz (nu = 0.49, 0.499, 0.4999): converges, "
   // with E* = E / (1 - nu^2) for the load of prm/hertz.prm.
   const double P = 2 * 4.315374524161804, R = 1., E = 1000.;
 
-  // Default solver parameters throughout. At nu = 0.4999 the gradient of
-  // loop 3 cannot fall below its round-off floor (1.3e-10 |b|, above the
-  // final tolerance 1e-10 |b|); Newton detects the stagnation and accepts
-  // the floor (it used to stop after 50 steps). The Uzawa steps grow as the
-  // locked material stiffens against r, which is scaled by E: 174 steps at
-  // 0.4999 (nu = 0.49999 needs a larger <Solver/Augmentation parameter>).
-  const std::vector<std::pair<double, std::string>> cases = {{0.3, ""},
-                                                             {0.49, ""},
-                                                             {0.499, ""},
-                                                             {0.4999, ""}};
-  std::ostringstream                                table;
+  // Default solver parameters throughout. r is scaled by the P-wave modulus
+  // lambda + 2 mu, which follows the locked material's stiffness, so the
+  // Uzawa steps stay at 7-8 up to nu = 0.4999 (with r scaled by E they grew
+  // to 174). At nu = 0.4999 and beyond the gradient of loop 3 may not fall
+  // below its round-off floor (about 1e-10 |b|); Newton detects the
+  // stagnation and accepts the floor.
+  const std::vector<std::pair<double, std::string>> cases = {
+    {0.3, ""}, {0.49, ""}, {0.499, ""}, {0.4999, ""}, {0.49999, ""}};
+  std::ostringstream table;
   table << "hertz, nu: nu | a | p0 | Uzawa | Newton | CG | loop 1 | contact "
            "force | load | max pressure | time [s] | peak error | half-width "
            "error (edges) | pressure L2 error\n";
@@ -578,11 +576,10 @@ TEST_CASE("Nearly incompressible Hertz (nu = 0.49, 0.499, 0.4999): converges, "
       CHECK(r.normal_load == Approx(P).epsilon(1e-12));
       CHECK(std::abs(r.contact_force - r.normal_load) <= 1e-8 * r.normal_load);
       CHECK(r.n_active > 0);
-      // about twice the measured Uzawa steps: 8, 11, 34, 174
-      CHECK(r.uzawa_steps <= (nu < 0.45   ? 20u :
-                              nu < 0.495  ? 25u :
-                              nu < 0.4995 ? 70u :
-                                            350u));
+      // about twice the larger of the measured Uzawa steps on 1 and 2
+      // ranks: 7 to 8 for nu <= 0.4999; 32 and 14 at 0.49999, where the
+      // round-off floor of loop 3 makes the count depend on the partition
+      CHECK(r.uzawa_steps <= (nu < 0.49995 ? 16u : 64u));
     }
   if (on_rank_0())
     std::cout << table.str() << std::flush;
