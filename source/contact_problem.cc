@@ -188,6 +188,7 @@ namespace dualcontact
                                        system_matrix,
                                        scene.center(),
                                        scene.characteristic_length());
+    indicator_valid = false; // a new solution
     TrilinosWrappers::MPI::Vector v(locally_owned_dofs, mpi_communicator);
     if (scene.effects().contact)
       solve_contact(v);
@@ -589,12 +590,8 @@ namespace dualcontact
 
     // what the adaptive strategies rank the cells by (the cells refined
     // next are those with the largest values)
-    Vector<float> indicator;
     if (parameters.refinement.strategy != RefinementStrategy::global)
-      {
-        indicator = refinement_indicator();
-        data_out.add_data_vector(indicator, "refinement_indicator");
-      }
+      data_out.add_data_vector(refinement_indicator(), "refinement_indicator");
 
     // Nodal fields on Gamma_C, on a scalar copy of the element: contact
     // pressure l1, gap g0 - u_n, status (-1 not a contact node, 0 separated,
@@ -831,11 +828,15 @@ namespace dualcontact
   }
 
   template <int dim>
-  Vector<float>
-  ContactProblem<dim>::refinement_indicator() const
+  const Vector<float> &
+  ContactProblem<dim>::refinement_indicator()
   {
+    // computed once per solution: the output and the marking both use it
+    if (indicator_valid)
+      return indicator;
+    indicator_valid                        = true;
     const RefinementParameters &refinement = parameters.refinement;
-    Vector<float> indicator = kelly_indicator(mapping, dof_handler, solution);
+    indicator = kelly_indicator(mapping, dof_handler, solution);
     if (refinement.strategy == RefinementStrategy::contact &&
         scene.effects().contact)
       {
@@ -866,10 +867,9 @@ namespace dualcontact
             cell->set_refine_flag();
         return;
       }
-    const Vector<float> indicator = refinement_indicator();
     parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
       triangulation,
-      indicator,
+      refinement_indicator(),
       refinement.refine_fraction,
       refinement.coarsen_fraction);
   }

@@ -181,8 +181,8 @@ namespace dualcontact
     write_iteration_table() const;
     void
     refine_mesh();
-    Vector<float>
-    refinement_indicator() const;
+    const Vector<float> &
+    refinement_indicator();
     void
     mark_cells_for_refinement();
     void
@@ -243,6 +243,10 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector carried_v;
     TrilinosWrappers::MPI::Vector carried_multipliers;
     TrilinosWrappers::MPI::Vector carried_threshold;
+
+    // the refinement indicator of the current solution, per active cell
+    Vector<float> indicator;
+    bool          indicator_valid = false;
 
     // per-cycle figures, and the (cycle, file) list of the .pvd record
     std::vector<CycleResult>                    cycle_results;

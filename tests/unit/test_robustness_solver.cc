@@ -2,7 +2,8 @@
 // proximal parameters over six decades, three systems of units, nearly
 // incompressible material, high friction coefficients. Every assertion is
 // on a value that is the same on all ranks. The figures each case prints
-// (rank 0) are the ones in doc/robustness_solver_draft.md.
+// (rank 0) are the ones in doc/robustness.md (items 1-4 measured with r
+// scaled by E; r is now scaled by lambda + 2 mu, and the bounds still hold).
 
 #include <deal.II/base/mpi.h>
 
@@ -442,7 +443,7 @@ TEST_CASE("hertz_friction: r_rel (1e-1 to 1e4) and chi_rel (1e-6 to 1e-1) "
   // steps on 1 rank and 70 on 2. chi_rel >= 1 still converges but stops
   // before the solution is reached to the tolerance: the contact force is
   // then off by 1e-8 (chi_rel = 1) and 1.4e-7 (chi_rel = 10) relative
-  // (doc/robustness_solver_draft.md).
+  // (doc/robustness.md).
   Run reference("hertz_friction.prm", one_cycle);
   check_sweep("hertz_friction.prm",
               reference,
