@@ -15,6 +15,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <dualcontact/contact_functions.h>
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/postprocess.h>
@@ -23,7 +24,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 
 namespace dualcontact
 {
@@ -32,13 +32,13 @@ namespace dualcontact
                                       MPI_Comm          mpi_communicator,
                                       std::ostream     &out)
       : mpi_communicator(mpi_communicator)
-      , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       , parameters(parameters)
       , scene(parameters)
       , computing_timer(mpi_communicator,
-                        pcout,
+                        out,
                         TimerOutput::never,
                         TimerOutput::wall_times)
+      , report(parameters, scene, computing_timer, mpi_communicator, out)
       , triangulation(mpi_communicator,
                       typename Triangulation<dim>::MeshSmoothing(
                         Triangulation<dim>::smoothing_on_refinement |
@@ -47,42 +47,62 @@ namespace dualcontact
       , fe(FE_Q<dim>(1), dim)
       , dof_handler(triangulation)
       , elastic_solver(parameters.solver)
-      , uzawa_solver(parameters.solver,
-                     elastic_solver,
-                     pcout,
-                     parameters.output.print_timing)
-      , friction_iteration(parameters.friction, uzawa_solver, pcout)
+      , newton(parameters.solver, elastic_solver)
+      , uzawa(parameters.solver, newton)
+      , threshold_iteration(parameters.friction, uzawa)
   {}
 
+  // The algorithm: on each mesh of a nested sequence, set up, carry the
+  // previous mesh's fields over, assemble, solve, measure, write; then
+  // refine. Each phase times itself and returns its figures; the report
+  // prints them and writes the tables.
   template <int dim>
   void
-  ContactProblem<dim>::print_header() const
+  ContactProblem<dim>::run()
   {
-    pcout << "dualcontact: " << dim << "D, "
-          << to_string(parameters.geometry.type)
-          << ", E = " << parameters.material.youngs_modulus
-          << ", nu = " << parameters.material.poissons_ratio << ", "
-          << Utilities::MPI::n_mpi_processes(mpi_communicator)
-          << " MPI rank(s)\n";
-    pcout << "Boundary parts:\n";
-    for (const auto &[id, condition] : parameters.boundary.conditions)
-      pcout << "  id " << static_cast<unsigned int>(id) << ": "
-            << to_string(condition) << '\n';
-    pcout << "Effects composed for this scene:\n" << scene.effects().describe();
+    make_grid(); // checks the input first: nothing is written before
+    report.print_scene();
+
+    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
+         ++cycle)
+      {
+        if (cycle > 0)
+          refine_mesh();
+
+        CycleResult result;
+        result.mesh     = setup_system(cycle);
+        result.transfer = transfer_fields();
+        report.start_cycle(result.mesh, result.transfer);
+
+        assemble_system();
+        result.solve = solve();
+        if (scene.effects().contact)
+          {
+            result.zone = measure_contact_zone();
+            result.cold = compare_with_cold_start();
+          }
+        result.errors = postprocess();
+
+        output_results(cycle);
+        report.end_cycle(result);
+      }
+    report.finish();
   }
 
   template <int dim>
   void
   ContactProblem<dim>::make_grid()
   {
+    TimerOutput::Scope t(computing_timer, "make grid");
     scene.create_mesh(triangulation);
     scene.check_rigid_motions(triangulation);
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::setup_system()
+  MeshFigures
+  ContactProblem<dim>::setup_system(const unsigned int cycle)
   {
+    TimerOutput::Scope t(computing_timer, "setup system");
     dof_handler.distribute_dofs(fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
@@ -141,13 +161,67 @@ namespace dualcontact
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
+
+    // the contact nodes, their weights and gaps (doc/theory.md §4)
+    if (scene.effects().contact)
+      {
+        contact_set.setup(
+          mapping, dof_handler, hanging_node_constraints, constraints, scene);
+        AssertThrow(contact_set.n_global_nodes() > 0,
+                    ExcMessage("The contact boundary has no contact nodes."));
+      }
+    return {cycle, triangulation.n_global_active_cells(), dof_handler.n_dofs()};
+  }
+
+  template <int dim>
+  TransferFigures
+  ContactProblem<dim>::transfer_fields()
+  {
+    TransferFigures figures;
+    carried = false;
+    if (!transfer)
+      return figures;
+    TimerOutput::Scope t(computing_timer, "refine mesh");
+    carried_v.reinit(locally_owned_dofs, mpi_communicator);
+    std::vector<TrilinosWrappers::MPI::Vector *> fields = {&carried_v};
+    if (scene.effects().contact)
+      {
+        carried_multipliers.reinit(locally_owned_dofs, mpi_communicator);
+        carried_threshold.reinit(locally_owned_dofs, mpi_communicator);
+        fields.push_back(&carried_multipliers);
+        fields.push_back(&carried_threshold);
+      }
+    transfer->interpolate(fields);
+    transfer.reset();
+    constraints.distribute(carried_v);
+    carried            = true;
+    figures.warm_start = true;
+    if (scene.effects().contact)
+      {
+        // the multipliers onto the contact nodes, projected onto the
+        // admissible set; how far they were from it (doc/theory.md §7)
+        const auto [smallest_l1, excess] =
+          contact_set.read_fields(carried_multipliers, carried_threshold);
+        const double l1_max = std::max(carried_multipliers.linfty_norm(),
+                                       std::numeric_limits<double>::min());
+        const double g_max  = std::max(carried_threshold.linfty_norm(),
+                                      std::numeric_limits<double>::min());
+        figures.carried_min_l1 =
+          Utilities::MPI::min(smallest_l1, mpi_communicator) / l1_max;
+        // without friction there is no l2 and no excess
+        if (contact_set.friction)
+          figures.carried_max_excess =
+            Utilities::MPI::max(excess, mpi_communicator) / g_max;
+      }
+    return figures;
   }
 
   template <int dim>
   void
   ContactProblem<dim>::assemble_system()
   {
-    const bool contact = scene.effects().contact;
+    TimerOutput::Scope t(computing_timer, "assemble system");
+    const bool         contact = scene.effects().contact;
     assemble_elasticity(mapping,
                         dof_handler,
                         scene,
@@ -169,20 +243,20 @@ namespace dualcontact
     if (contact)
       {
         // The Uzawa steps minimise with the proximal term (chi/2)|v - v^k|^2
-        // (DESIGN.md §2), so their matrix is K = A + chi M. chi is relative
-        // to E / L^2 so that the scene's units do not matter.
-        const double chi = parameters.solver.proximal *
-                           parameters.material.youngs_modulus /
-                           std::pow(scene.characteristic_length(), 2);
+        // (doc/theory.md §3.2), so their matrix is K = A + chi M. chi is
+        // relative to E / L^2 so that the scene's units do not matter
+        // (doc/theory.md §5).
+        chi = parameters.solver.proximal * parameters.material.youngs_modulus /
+              std::pow(scene.characteristic_length(), 2);
         system_matrix.add(chi, mass_matrix);
-        cycle_results.back().chi = chi;
       }
   }
 
   template <int dim>
-  void
+  SolveFigures
   ContactProblem<dim>::solve()
   {
+    TimerOutput::Scope t(computing_timer, "solve");
     elastic_solver.set_near_null_space(mapping,
                                        dof_handler,
                                        system_matrix,
@@ -190,23 +264,99 @@ namespace dualcontact
                                        scene.characteristic_length());
     indicator_valid = false; // a new solution
     TrilinosWrappers::MPI::Vector v(locally_owned_dofs, mpi_communicator);
-    if (scene.effects().contact)
-      solve_contact(v);
-    else
-      solve_linear_elasticity(v);
+    const SolveFigures            figures =
+      scene.effects().contact ? solve_contact(v) : solve_linear_elasticity(v);
     solution = v;
+    return figures;
+  }
+
+  template <int dim>
+  SolveFigures
+  ContactProblem<dim>::solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v)
+  {
+    SolveFigures figures;
+    if (carried) // nested iteration: the coarse solution is a first guess
+      v = carried_v;
+    elastic_solver.initialize(system_matrix);
+    figures.cg_iterations = elastic_solver.solve(system_matrix, v, system_rhs);
+    constraints.distribute(v);
+    return figures;
+  }
+
+  template <int dim>
+  SolveFigures
+  ContactProblem<dim>::prepare_contact_solve()
+  {
+    SolveFigures figures;
+    held_by_friction_pressure = check_equilibrium();
+
+    // r is relative to (lambda + 2 mu) / h_C, so that the Uzawa steps do
+    // not depend on the units or on the mesh size; the P-wave modulus
+    // lambda + 2 mu rather than E, because it follows the stiffness of a
+    // nearly incompressible (locked) material, for which r_rel E / h_C is
+    // far too small (doc/theory.md §5).
+    r = parameters.solver.augmentation *
+        (parameters.material.lambda() + 2. * parameters.material.mu()) /
+        contact_set.min_face_diameter();
+    figures.r                 = r;
+    figures.chi               = chi;
+    figures.n_contact_nodes   = contact_set.n_global_nodes();
+    figures.n_hanging_contact = contact_set.n_hanging_nodes();
+    // the net load toward the foundation, which the contact force balances
+    // when nothing else holds the body in that direction
+    figures.normal_load = net_load(contact_set.normal);
+    return figures;
+  }
+
+  template <int dim>
+  ContactSystem
+  ContactProblem<dim>::contact_system() const
+  {
+    return {
+      system_matrix, mass_matrix, system_rhs, homogeneous_constraints, r, chi};
+  }
+
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  ContactProblem<dim>::initial_displacement() const
+  {
+    TrilinosWrappers::MPI::Vector v(locally_owned_dofs, mpi_communicator);
+    if (carried)
+      v = carried_v;
+    constraints.distribute(v);
+    return v;
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v)
+  ContactProblem<dim>::set_displacement(const TrilinosWrappers::MPI::Vector &v)
   {
-    if (carried) // nested iteration: the coarse solution is a first guess
-      v = carried_v;
-    elastic_solver.initialize(system_matrix);
-    cycle_results.back().linear_iterations =
-      elastic_solver.solve(system_matrix, v, system_rhs);
-    constraints.distribute(v);
+    solution        = v;
+    indicator_valid = false;
+  }
+
+  template <int dim>
+  SolveFigures
+  ContactProblem<dim>::solve_contact(TrilinosWrappers::MPI::Vector &v)
+  {
+    SolveFigures figures = prepare_contact_solve();
+    report.start_contact_solve(figures);
+
+    // from the previous mesh's solution (nested iteration), or from v = 0
+    // with the prescribed boundary values and l1 = l2 = 0
+    v = initial_displacement();
+    static_cast<ContactStatistics &>(figures) =
+      threshold_iteration.solve(contact_system(),
+                                contact_set,
+                                v,
+                                &report,
+                                held_by_friction_pressure,
+                                carried);
+
+    if (parameters.solver.time_reference_solve)
+      figures.time_reference = newton.time_reference_solve(
+        contact_system(), contact_set, v, figures.reference_iterations);
+    return figures;
   }
 
   template <int dim>
@@ -233,9 +383,11 @@ namespace dualcontact
   {
     // A translation that only the contact can stop must be balanced by
     // contact forces: they push along m (never pull) and their tangential
-    // part is at most the friction capacity. Necessary conditions, checked
-    // before solving so that an impossible load never loops.
+    // part is at most what the friction law can resist. Necessary
+    // conditions, checked before solving so that an impossible load never
+    // loops (doc/theory.md §8).
     const Tensor<1, dim> m = -contact_set.normal; // into the body
+    LoadBalance          balance;
     Tensor<1, dim>       resultant;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -243,294 +395,83 @@ namespace dualcontact
         e[d]         = 1.;
         resultant[d] = net_load(e);
       }
-    const double scale = 1e-10 * resultant.norm();
+    balance.resultant   = resultant.norm();
+    balance.normal_free = scene.translation_is_free(m, triangulation);
+    balance.load_away   = net_load(m);
 
-    const bool   normal_free = scene.translation_is_free(m, triangulation);
-    const double load_away   = net_load(m); // > 0: pulls off the foundation
-    if (normal_free && load_away > scale)
-      throw InputError(
-        "No equilibrium: the net load pulls the body away from the foundation "
-        "(" +
-          std::to_string(load_away) +
-          " along the foundation normal) and only the contact could hold it "
-          "in that direction.",
-        exit_no_equilibrium);
+    // N / |Gamma_C| if only friction holds a tangential load and N is known
+    double pressure = 0.;
+    for (const Tensor<1, dim> &t : contact_set.tangents)
+      if (scene.translation_is_free(t, triangulation))
+        {
+          const double load = std::abs(net_load(t));
+          balance.tangential_loads.push_back(load);
+          if (balance.normal_free && load > 1e-10 * balance.resultant)
+            pressure = -balance.load_away / contact_set.measure();
+        }
 
-    // returned: N / |Gamma_C| if only friction holds a tangential load
-    // and N is known (see FrictionIteration::solve), else 0
-    double held_by_friction_pressure = 0.;
-    for (unsigned int k = 0; k < dim - 1; ++k)
-      {
-        const Tensor<1, dim> &t = contact_set.tangents[k];
-        if (!scene.translation_is_free(t, triangulation))
-          continue;
-        const double tangential = std::abs(net_load(t));
-        if (normal_free && tangential > scale)
-          held_by_friction_pressure = -load_away / contact_set.measure();
-        double      capacity = 0.; // what friction can resist at most
-        std::string bound    = "0 (frictionless contact)";
-        if (scene.effects().friction == FrictionLaw::given)
-          {
-            double local = 0;
-            for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-              local += contact_set.nodes[s].weight * contact_set.threshold[s];
-            capacity = Utilities::MPI::sum(local, mpi_communicator);
-            bound    = std::to_string(capacity) + " (the sum of the given "
-                                                  "threshold over Gamma_C)";
-          }
-        else if (scene.effects().friction == FrictionLaw::coulomb)
-          {
-            if (!normal_free)
-              continue; // N is not known from the load alone
-            double largest = 0;
-            for (const double F : contact_set.coefficient)
-              largest = std::max(largest, F);
-            largest  = Utilities::MPI::max(largest, mpi_communicator);
-            capacity = largest * (-load_away);
-            bound    = std::to_string(capacity) +
-                    " (F N, N = " + std::to_string(-load_away) +
-                    " the normal load)";
-          }
-        if (tangential > capacity * (1. + 1e-10) + scale)
-          throw InputError(
-            "No equilibrium: the net tangential load " +
-              std::to_string(tangential) +
-              " exceeds what friction can resist, " + bound +
-              ", and only friction holds the body along the foundation.",
-            exit_no_equilibrium);
-      }
-    return held_by_friction_pressure;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::solve_contact(TrilinosWrappers::MPI::Vector &v)
-  {
-    CycleResult &result = cycle_results.back();
-    contact_set.setup(
-      mapping, dof_handler, hanging_node_constraints, constraints, scene);
-    AssertThrow(contact_set.n_global_nodes() > 0,
-                ExcMessage("The contact boundary has no contact nodes."));
-    const double held_by_friction_pressure = check_equilibrium();
-    // the net load toward the foundation, which the contact force balances
-    // when nothing else holds the body in that direction
-    result.normal_load = net_load(contact_set.normal);
-
-    // r is relative to (lambda + 2 mu) / h_C, so that the Uzawa steps do
-    // not depend on the units or on the mesh size (DESIGN.md §3); the
-    // P-wave modulus lambda + 2 mu rather than E, because it follows the
-    // stiffness of a nearly incompressible (locked) material, for which
-    // r_rel E / h_C is far too small (doc/robustness.md §3).
-    result.r = parameters.solver.augmentation *
-               (parameters.material.lambda() + 2. * parameters.material.mu()) /
-               contact_set.min_face_diameter();
-    result.n_contact_nodes = contact_set.n_global_nodes();
-    pcout << "   contact: " << result.n_contact_nodes
-          << " nodes, r = " << result.r << ", chi = " << result.chi << '\n';
-
-    result.n_hanging_contact = contact_set.n_hanging_nodes();
-    const ContactSystem system{system_matrix,
-                               mass_matrix,
-                               system_rhs,
-                               homogeneous_constraints,
-                               result.r,
-                               result.chi};
-
-    // For the comparison of nested iteration with a cold start: the same
-    // mesh solved from v = 0, l1 = l2 = 0 first (its log is not kept).
-    TrilinosWrappers::MPI::Vector v_cold;
-    ContactSet<dim>               cold_set;
-    result.warm_start = carried;
-    if (carried && parameters.refinement.compare_cold_start)
-      {
-        pcout << "   cold start, for comparison with nested iteration:\n";
-        cold_set = contact_set;
-        v_cold.reinit(locally_owned_dofs, mpi_communicator);
-        constraints.distribute(v_cold);
-        std::vector<IterationRecord> cold_log;
-        Timer                        timer(mpi_communicator, true);
-        const ContactStatistics      cold = friction_iteration.solve(
-          system, cold_set, v_cold, cold_log, held_by_friction_pressure);
-        timer.stop();
-        result.cold_uzawa_steps    = cold.uzawa_steps;
-        result.cold_newton_steps   = cold.newton_steps;
-        result.cold_friction_steps = cold.friction_steps;
-        result.cold_time_solve     = timer.wall_time();
-        pcout << "   nested start from the previous mesh:\n";
-      }
-
-    // Start from the previous mesh's solution (nested iteration), or from
-    // v = 0 with the prescribed boundary values and l1 = l2 = 0.
-    if (carried)
-      {
-        v = carried_v;
-        const auto [smallest_l1, excess] =
-          contact_set.read_fields(carried_multipliers, carried_threshold);
-        const double l1_max = std::max(carried_multipliers.linfty_norm(),
-                                       std::numeric_limits<double>::min());
-        const double g_max  = std::max(carried_threshold.linfty_norm(),
-                                      std::numeric_limits<double>::min());
-        result.carried_min_l1 =
-          Utilities::MPI::min(smallest_l1, mpi_communicator) / l1_max;
-        result.carried_max_excess =
-          Utilities::MPI::max(excess, mpi_communicator) / g_max;
-      }
-    else
-      v = 0;
-    constraints.distribute(v);
-
-    const std::size_t       first = iteration_log.size();
-    const ContactStatistics statistics =
-      friction_iteration.solve(system,
-                               contact_set,
-                               v,
-                               iteration_log,
-                               held_by_friction_pressure,
-                               carried);
-    for (std::size_t i = first; i < iteration_log.size(); ++i)
-      iteration_log[i].cycle = result.cycle;
-
-    if (v_cold.size() > 0)
-      {
-        // in the energy norm a(e, e) = e.(K - chi M)e, blind to the rigid
-        // motions that only the proximal term fixes (a semi-coercive scene
-        // keeps the one its start selects)
-        // (on the condensed matrices: over the unconstrained DoFs)
-        const auto energy = [&](TrilinosWrappers::MPI::Vector e) {
-          homogeneous_constraints.set_zero(e);
-          TrilinosWrappers::MPI::Vector Ke(e), Me(e);
-          system_matrix.vmult(Ke, e);
-          mass_matrix.vmult(Me, e);
-          return std::sqrt(std::max(e * Ke - result.chi * (e * Me), 0.));
-        };
-        TrilinosWrappers::MPI::Vector difference(v);
-        difference -= v_cold;
-        const double reference = energy(v_cold);
-        result.cold_difference_v =
-          reference > 0. ? energy(difference) / reference : energy(difference);
-        double sums[2] = {0., 0.};
-        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-          {
-            const double m = contact_set.nodes[s].weight;
-            sums[0] += m * std::pow(contact_set.l1[s] - cold_set.l1[s], 2);
-            sums[1] += m * cold_set.l1[s] * cold_set.l1[s];
-          }
-        Utilities::MPI::sum(ArrayView<const double>(sums, 2),
-                            mpi_communicator,
-                            ArrayView<double>(sums, 2));
-        result.cold_difference_l1 =
-          sums[1] > 0. ? std::sqrt(sums[0] / sums[1]) : std::sqrt(sums[0]);
-      }
-
-    if (parameters.solver.time_reference_solve)
-      result.time_reference = uzawa_solver.time_reference_solve(
-        system, contact_set, v, result.reference_iterations);
-
-    result.uzawa_steps       = statistics.uzawa_steps;
-    result.newton_steps      = statistics.newton_steps;
-    result.linear_iterations = statistics.cg_iterations;
-    result.amg_setups        = statistics.amg_setups;
-    result.uzawa_rate        = statistics.rate;
-    result.l1_error_estimate = statistics.estimated_l1_error;
-    result.n_active          = statistics.n_active;
-    result.n_stick           = statistics.n_stick;
-    result.n_slip            = statistics.n_slip;
-    result.friction_steps    = statistics.friction_steps;
-
-    measure_contact_zone(result);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::measure_contact_zone(CycleResult &result) const
-  {
-    // Figures of the contact zone: total force, peak pressure, half-width
-    // along t, and the L2 error against an exact pressure.
-    const Function<dim> *exact = scene.exact_pressure();
-    double               force = 0, peak = 0;
-    double               t_min = std::numeric_limits<double>::max();
-    double               t_max = -std::numeric_limits<double>::max();
+    // what the friction law can resist: from sum_s m_s p_s, max_s p_s (p
+    // its parameter) and the normal load
+    double weighted = 0., largest = 0.;
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
-        const ContactNode<dim> &node = contact_set.nodes[s];
-        const double            l1   = contact_set.l1[s];
-        force += node.weight * l1;
-        peak = std::max(peak, l1);
-        if (l1 > 0.)
-          {
-            const double t = node.position * contact_set.tangent;
-            t_min          = std::min(t_min, t);
-            t_max          = std::max(t_max, t);
-          }
+        weighted +=
+          contact_set.nodes[s].weight * contact_set.friction_parameter[s];
+        largest = std::max(largest, contact_set.friction_parameter[s]);
       }
-    result.contact_force = Utilities::MPI::sum(force, mpi_communicator);
+    std::string  why;
+    const double capacity = scene.effects().friction_law().capacity(
+      Utilities::MPI::sum(weighted, mpi_communicator),
+      Utilities::MPI::max(largest, mpi_communicator),
+      balance.normal_free ? -balance.load_away : -1.,
+      why);
+    dualcontact::check_equilibrium(balance, capacity, why);
+    return pressure;
+  }
+
+  template <int dim>
+  ContactZoneFigures
+  ContactProblem<dim>::measure_contact_zone() const
+  {
+    TimerOutput::Scope t(computing_timer, "measure contact zone");
+    ContactZoneFigures figures;
+    double             force = 0, peak = 0;
     Tensor<1, dim - 1> tangential;
+    std::vector<std::pair<double, double>> local; // (t, l1)
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-      tangential += contact_set.nodes[s].weight * contact_set.l2[s];
+      {
+        const double m = contact_set.nodes[s].weight;
+        force += m * contact_set.l1[s];
+        tangential += m * contact_set.l2[s];
+        peak = std::max(peak, contact_set.l1[s]);
+        local.emplace_back(contact_set.nodes[s].position * contact_set.tangent,
+                           contact_set.l1[s]);
+      }
+    figures.contact_force = Utilities::MPI::sum(force, mpi_communicator);
     for (unsigned int k = 0; k < dim - 1; ++k)
       tangential[k] = Utilities::MPI::sum(tangential[k], mpi_communicator);
-    result.tangential_force = tangential.norm();
-    result.max_pressure     = Utilities::MPI::max(peak, mpi_communicator);
-    t_min                   = Utilities::MPI::min(t_min, mpi_communicator);
-    t_max                   = Utilities::MPI::max(t_max, mpi_communicator);
-    if (dim == 2 && t_max >= t_min)
+    figures.tangential_force = tangential.norm();
+    figures.max_pressure     = Utilities::MPI::max(peak, mpi_communicator);
+
+    // the half-width along t, in 2D
+    if (dim == 2)
       {
-        result.contact_half_width = 0.5 * (t_max - t_min);
-        // A sharper estimate of the zone's edges: near an edge of a smooth
-        // contact the pressure vanishes like sqrt(distance), so l1^2 is
-        // linear there; extrapolate it from the two outermost active nodes
-        // on each side to zero, staying before the first separated node.
-        // Where the zone reaches the end of Gamma_C there is no such edge,
-        // and the outermost node is kept.
-        std::vector<std::pair<double, double>> local;
-        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-          local.emplace_back(contact_set.nodes[s].position *
-                               contact_set.tangent,
-                             contact_set.l1[s]);
-        std::vector<std::pair<double, double>> nodes; // (t, l1), all nodes
+        std::vector<std::pair<double, double>> nodes;
         for (const auto &part :
              Utilities::MPI::all_gather(mpi_communicator, local))
           nodes.insert(nodes.end(), part.begin(), part.end());
         std::sort(nodes.begin(), nodes.end());
-        std::size_t first = 0, last = nodes.size();
-        while (first < nodes.size() && !(nodes[first].second > 0.))
-          ++first;
-        while (last > first && !(nodes[last - 1].second > 0.))
-          --last;
-        // edge beyond `outer` (active) toward `beyond` (separated)
-        const auto edge = [](const std::pair<double, double> &outer,
-                             const std::pair<double, double> &inner,
-                             const std::pair<double, double> &beyond) {
-          const double p2_outer = outer.second * outer.second;
-          const double p2_inner = inner.second * inner.second;
-          if (!(p2_inner > p2_outer))
-            return outer.first;
-          const double t = outer.first + (outer.first - inner.first) *
-                                           p2_outer / (p2_inner - p2_outer);
-          return std::clamp(t,
-                            std::min(outer.first, beyond.first),
-                            std::max(outer.first, beyond.first));
-        };
-        if (last - first >= 2)
-          {
-            const double lower =
-              first > 0 ?
-                edge(nodes[first], nodes[first + 1], nodes[first - 1]) :
-                nodes[first].first;
-            const double upper =
-              last < nodes.size() ?
-                edge(nodes[last - 1], nodes[last - 2], nodes[last]) :
-                nodes[last - 1].first;
-            result.contact_edge_half_width = 0.5 * (upper - lower);
-          }
-        else
-          result.contact_edge_half_width = result.contact_half_width;
+        const ContactZoneWidth width = contact_zone_half_width(nodes);
+        figures.half_width           = width.nodes;
+        figures.edge_half_width      = width.extrapolated;
       }
-    if (exact != nullptr)
+
+    // errors against what the scene knows
+    if (const Function<dim> *exact = scene.exact_pressure())
       {
         TrilinosWrappers::MPI::Vector multipliers, threshold;
         multiplier_fields(multipliers, threshold);
-        result.pressure_error =
+        figures.pressure_error =
           compute_pressure_error(mapping,
                                  dof_handler,
                                  multipliers,
@@ -538,40 +479,92 @@ namespace dualcontact
                                  *exact);
       }
     if (parameters.exact.contact_half_width > 0.)
-      result.half_width_error =
-        result.contact_edge_half_width / parameters.exact.contact_half_width -
-        1.;
+      figures.half_width_error =
+        figures.edge_half_width / parameters.exact.contact_half_width - 1.;
     if (parameters.exact.peak_pressure > 0.)
-      result.peak_pressure_error =
-        result.max_pressure / parameters.exact.peak_pressure - 1.;
+      figures.peak_pressure_error =
+        figures.max_pressure / parameters.exact.peak_pressure - 1.;
+    return figures;
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::postprocess(CycleResult &result)
+  ColdStartFigures
+  ContactProblem<dim>::compare_with_cold_start()
   {
-    const ErrorNorms norms = compute_error_norms(mapping,
-                                                 dof_handler,
-                                                 solution,
-                                                 scene.exact_displacement());
-    result.u_l2            = norms.u_l2;
-    result.l2_error        = norms.l2;
-    result.h1_error        = norms.h1_semi;
-    if (cycle_results.size() > 1 && scene.exact_displacement() != nullptr)
+    ColdStartFigures figures;
+    if (!carried || !parameters.refinement.compare_cold_start)
+      return figures;
+    TimerOutput::Scope t(computing_timer, "cold start (comparison)");
+    report.start_cold_start();
+    ContactSet<dim> cold_set = contact_set;
+    cold_set.reset_multipliers();
+    TrilinosWrappers::MPI::Vector v_cold(locally_owned_dofs, mpi_communicator);
+    constraints.distribute(v_cold);
+    // its steps are neither printed nor logged
+    const ContactStatistics cold = threshold_iteration.solve(
+      contact_system(), cold_set, v_cold, nullptr, held_by_friction_pressure);
+    report.end_cold_start();
+    figures.uzawa_steps     = cold.uzawa_steps;
+    figures.newton_steps    = cold.newton_steps;
+    figures.threshold_steps = cold.threshold_steps;
+
+    // in the energy norm a(e, e) = e.(K - chi M)e, blind to the rigid
+    // motions that only the proximal term fixes (a semi-coercive scene
+    // keeps the one its start selects); on the condensed matrices, i.e.
+    // over the unconstrained DoFs
+    const auto energy = [&](TrilinosWrappers::MPI::Vector e) {
+      homogeneous_constraints.set_zero(e);
+      TrilinosWrappers::MPI::Vector Ke(e), Me(e);
+      system_matrix.vmult(Ke, e);
+      mass_matrix.vmult(Me, e);
+      return std::sqrt(std::max(e * Ke - chi * (e * Me), 0.));
+    };
+    TrilinosWrappers::MPI::Vector difference(locally_owned_dofs,
+                                             mpi_communicator);
+    difference = solution;
+    difference -= v_cold;
+    figures.difference_v = relative_change(energy(difference), energy(v_cold));
+    double sums[2]       = {0., 0.};
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
-        // meshes are halved between cycles: the rate is log2 of the ratio
-        const CycleResult &previous = cycle_results[cycle_results.size() - 2];
-        result.l2_rate = std::log2(previous.l2_error / result.l2_error);
-        result.h1_rate = std::log2(previous.h1_error / result.h1_error);
+        const double m = contact_set.nodes[s].weight;
+        sums[0] += m * std::pow(contact_set.l1[s] - cold_set.l1[s], 2);
+        sums[1] += m * cold_set.l1[s] * cold_set.l1[s];
       }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                        mpi_communicator,
+                        ArrayView<double>(sums, 2));
+    figures.difference_l1 =
+      relative_change(std::sqrt(sums[0]), std::sqrt(sums[1]));
+    return figures;
+  }
+
+  template <int dim>
+  ErrorNorms
+  ContactProblem<dim>::postprocess() const
+  {
+    TimerOutput::Scope t(computing_timer, "postprocess");
+    return compute_error_norms(mapping,
+                               dof_handler,
+                               solution,
+                               scene.exact_displacement());
   }
 
   template <int dim>
   void
   ContactProblem<dim>::output_results(const unsigned int cycle)
   {
+    // The output folder is made only now: a run that fails on its first
+    // mesh (bad input found late, no equilibrium) writes nothing.
+    if (cycle == 0)
+      {
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          std::filesystem::create_directories(parameters.output.directory);
+        MPI_Barrier(mpi_communicator);
+      }
     if (!parameters.output.write_vtu)
       return;
+    TimerOutput::Scope t(computing_timer, "output results");
 
     StressPostprocessor<dim> stress(parameters.material);
     DataOut<dim>             data_out;
@@ -687,122 +680,6 @@ namespace dualcontact
 
   template <int dim>
   void
-  ContactProblem<dim>::write_cycle_table() const
-  {
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
-    std::ofstream csv(parameters.output.directory + "/cycles.csv");
-    csv << "cycle,cells,dofs,contact_nodes,active_nodes,uzawa_steps,"
-           "newton_steps,linear_iterations,amg_setups,contact_force,"
-           "max_pressure,contact_half_width,pressure_error,u_l2,"
-           "l2_error,h1_error,l2_rate,h1_rate,time_setup,time_assembly,"
-           "time_solve,time_output,time_reference,memory_mb,"
-           "friction_steps,stick_nodes,slip_nodes,tangential_force,"
-           "contact_edge_half_width,half_width_error,peak_pressure_error,"
-           "hanging_contact_nodes,warm_start,cold_uzawa_steps,"
-           "cold_newton_steps,cold_friction_steps,cold_time_solve,"
-           "cold_difference_v,cold_difference_l1,time_refine,time_total,"
-           "carried_min_l1,carried_max_excess\n";
-    csv << std::setprecision(10);
-    for (const CycleResult &r : cycle_results)
-      csv << r.cycle << ',' << r.n_cells << ',' << r.n_dofs << ','
-          << r.n_contact_nodes << ',' << r.n_active << ',' << r.uzawa_steps
-          << ',' << r.newton_steps << ',' << r.linear_iterations << ','
-          << r.amg_setups << ',' << r.contact_force << ',' << r.max_pressure
-          << ',' << r.contact_half_width << ',' << r.pressure_error << ','
-          << r.u_l2 << ',' << r.l2_error << ',' << r.h1_error << ','
-          << r.l2_rate << ',' << r.h1_rate << ',' << r.time_setup << ','
-          << r.time_assembly << ',' << r.time_solve << ',' << r.time_output
-          << ',' << r.time_reference << ',' << r.memory_mb << ','
-          << r.friction_steps << ',' << r.n_stick << ',' << r.n_slip << ','
-          << r.tangential_force << ',' << r.contact_edge_half_width << ','
-          << r.half_width_error << ',' << r.peak_pressure_error << ','
-          << r.n_hanging_contact << ',' << r.warm_start << ','
-          << r.cold_uzawa_steps << ',' << r.cold_newton_steps << ','
-          << r.cold_friction_steps << ',' << r.cold_time_solve << ','
-          << r.cold_difference_v << ',' << r.cold_difference_l1 << ','
-          << r.time_refine << ',' << r.time_total << ',' << r.carried_min_l1
-          << ',' << r.carried_max_excess << '\n';
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::print_convergence_table() const
-  {
-    if (!scene.effects().contact)
-      return;
-    // one line per cycle: mesh, errors, iterations of each loop, wall times
-    const bool    friction = scene.effects().friction != FrictionLaw::none;
-    const auto    column   = [](const int w) { return std::setw(w); };
-    std::ostream &out      = pcout.get_stream();
-    if (!pcout.is_active())
-      return;
-    out << "\nConvergence table (" << to_string(parameters.refinement.strategy)
-        << " refinement"
-        << (parameters.refinement.nested_iteration ? ", nested iteration" :
-                                                     ", cold starts")
-        << "; errors relative; times in s):\n"
-        << "cycle    cells     DoFs  Gamma_C(hang)  p L2 err   a err     "
-           "p0 err   "
-        << (friction ? " loop1" : "")
-        << " Uzawa Newton     CG   refine  assemble    solve   total\n";
-    for (const CycleResult &r : cycle_results)
-      {
-        std::ostringstream nodes;
-        nodes << r.n_contact_nodes << "(" << r.n_hanging_contact << ")";
-        // an error is '-' where the scene gives nothing to compare with
-        const auto error = [](const bool known, const double value) {
-          std::ostringstream s;
-          if (known)
-            s << std::scientific << std::setprecision(2) << value;
-          else
-            s << '-';
-          return s.str();
-        };
-        out << column(5) << r.cycle << column(9) << r.n_cells << column(9)
-            << r.n_dofs << column(15) << nodes.str() << column(10)
-            << error(scene.exact_pressure() != nullptr, r.pressure_error)
-            << column(10)
-            << error(parameters.exact.contact_half_width > 0.,
-                     r.half_width_error)
-            << column(10)
-            << error(parameters.exact.peak_pressure > 0.,
-                     r.peak_pressure_error);
-        if (friction)
-          out << column(6) << r.friction_steps;
-        out << column(6) << r.uzawa_steps << column(7) << r.newton_steps
-            << column(7) << r.linear_iterations << std::fixed
-            << std::setprecision(3) << column(9) << r.time_refine << column(10)
-            << r.time_assembly << column(9) << r.time_solve << column(8)
-            << r.time_total << std::defaultfloat << '\n';
-      }
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::write_iteration_table() const
-  {
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0 ||
-        !scene.effects().contact)
-      return;
-    std::ofstream csv(parameters.output.directory + "/iterations.csv");
-    csv << "cycle,loop,uzawa_step,newton_step,newton_steps,cg_iterations,"
-           "amg_setups,n_active,n_stick,n_slip,gradient,step_length,"
-           "change_l1,change_l2,change_g,change_v,violation,complementarity,"
-           "time\n";
-    csv << std::setprecision(8);
-    for (const IterationRecord &r : iteration_log)
-      csv << r.cycle << ',' << r.loop << ',' << r.uzawa_step << ',' << r.index
-          << ',' << r.newton_steps << ',' << r.cg_iterations << ','
-          << r.amg_setups << ',' << r.n_active << ',' << r.n_stick << ','
-          << r.n_slip << ',' << r.gradient << ',' << r.step_length << ','
-          << r.change_l1 << ',' << r.change_l2 << ',' << r.change_g << ','
-          << r.change_v << ',' << r.violation << ',' << r.complementarity << ','
-          << r.time << '\n';
-  }
-
-  template <int dim>
-  void
   ContactProblem<dim>::multiplier_fields(
     TrilinosWrappers::MPI::Vector &multipliers,
     TrilinosWrappers::MPI::Vector &threshold) const
@@ -857,34 +734,27 @@ namespace dualcontact
 
   template <int dim>
   void
-  ContactProblem<dim>::mark_cells_for_refinement()
+  ContactProblem<dim>::refine_mesh()
   {
+    TimerOutput::Scope          t(computing_timer, "refine mesh");
     const RefinementParameters &refinement = parameters.refinement;
     if (refinement.strategy == RefinementStrategy::global)
       {
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             cell->set_refine_flag();
-        return;
       }
-    parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-      triangulation,
-      refinement_indicator(),
-      refinement.refine_fraction,
-      refinement.coarsen_fraction);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::refine_mesh()
-  {
-    mark_cells_for_refinement();
+    else
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        triangulation,
+        refinement_indicator(),
+        refinement.refine_fraction,
+        refinement.coarsen_fraction);
 
     // Nested iteration: v and the multiplier fields go with the cells.
     // The inputs must live until the refinement is executed.
-    carried = false;
     TrilinosWrappers::MPI::Vector multipliers, threshold;
-    if (parameters.refinement.nested_iteration)
+    if (refinement.nested_iteration)
       {
         std::vector<const TrilinosWrappers::MPI::Vector *> fields = {&solution};
         if (scene.effects().contact)
@@ -900,198 +770,6 @@ namespace dualcontact
         transfer->prepare_for_coarsening_and_refinement(fields);
       }
     triangulation.execute_coarsening_and_refinement();
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::interpolate_carried_fields()
-  {
-    if (!transfer)
-      return;
-    carried_v.reinit(locally_owned_dofs, mpi_communicator);
-    std::vector<TrilinosWrappers::MPI::Vector *> fields = {&carried_v};
-    if (scene.effects().contact)
-      {
-        carried_multipliers.reinit(locally_owned_dofs, mpi_communicator);
-        carried_threshold.reinit(locally_owned_dofs, mpi_communicator);
-        fields.push_back(&carried_multipliers);
-        fields.push_back(&carried_threshold);
-      }
-    transfer->interpolate(fields);
-    transfer.reset();
-    constraints.distribute(carried_v);
-    carried = true;
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::run()
-  {
-    // Everything about the input is checked before anything is written.
-    {
-      TimerOutput::Scope t(computing_timer, "make grid");
-      make_grid();
-    }
-    print_header();
-
-    const bool timing = parameters.output.print_timing;
-    const auto timed  = [&](const char *name, const auto &phase) {
-      TimerOutput::Scope t(computing_timer, name);
-      Timer              timer(mpi_communicator, /*sync_lap_times=*/true);
-      phase();
-      timer.stop();
-      return timer.wall_time();
-    };
-    const auto seconds = [timing](const double t) {
-      std::ostringstream s;
-      if (timing)
-        s << "  (" << std::fixed << std::setprecision(3) << t << " s)";
-      return s.str();
-    };
-
-    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
-         ++cycle)
-      {
-        const double time_refine =
-          cycle > 0 ? timed("refine mesh", [&] { refine_mesh(); }) : 0.;
-
-        cycle_results.emplace_back();
-        CycleResult &result = cycle_results.back();
-        result.cycle        = cycle;
-        result.time_setup   = timed("setup system", [&] { setup_system(); });
-        result.time_refine  = time_refine + timed("refine mesh", [&] {
-                               interpolate_carried_fields();
-                             });
-        result.n_cells      = triangulation.n_global_active_cells();
-        result.n_dofs       = dof_handler.n_dofs();
-        pcout << "Cycle " << cycle << ": " << result.n_cells << " cells, "
-              << result.n_dofs << " DoFs" << seconds(result.time_setup);
-        if (cycle > 0)
-          pcout << ", refined (" << to_string(parameters.refinement.strategy)
-                << (!carried ? "" :
-                    scene.effects().contact ?
-                               ", v and multipliers carried over" :
-                               ", v carried over")
-                << ")" << seconds(result.time_refine);
-        pcout << '\n';
-
-        result.time_assembly = timed("assemble", [&] { assemble_system(); });
-        pcout << "   assembled A and b" << seconds(result.time_assembly)
-              << '\n';
-        // the time of the cold start for comparison is reported apart
-        result.time_solve = timed("solve", [&] { solve(); });
-        result.time_solve -= result.cold_time_solve;
-        if (scene.effects().contact)
-          pcout << "   contact solved: " << result.uzawa_steps
-                << " Uzawa steps, " << result.newton_steps << " Newton steps, "
-                << result.linear_iterations << " CG iterations, "
-                << result.amg_setups << " AMG set-ups, " << result.n_active
-                << " of " << result.n_contact_nodes << " nodes in contact"
-                << seconds(result.time_solve) << '\n'
-                << std::setprecision(8) << "   total contact force "
-                << result.contact_force << " (net load toward the foundation "
-                << result.normal_load << "), peak pressure "
-                << result.max_pressure << ", contact half-width "
-                << result.contact_half_width << " (nodes), "
-                << result.contact_edge_half_width << " (edges extrapolated)";
-        if (scene.exact_pressure() != nullptr)
-          pcout << ", pressure error (rel. L2) " << result.pressure_error;
-        if (parameters.exact.contact_half_width > 0.)
-          pcout << ", half-width error " << result.half_width_error;
-        if (parameters.exact.peak_pressure > 0.)
-          pcout << ", peak error " << result.peak_pressure_error;
-        if (result.n_hanging_contact > 0)
-          pcout << "\n   " << result.n_hanging_contact
-                << " hanging nodes on Gamma_C (no contact condition of their "
-                   "own)";
-        if (result.cold_uzawa_steps > 0)
-          pcout << "\n   nested iteration against a cold start: Uzawa "
-                << result.uzawa_steps << " vs " << result.cold_uzawa_steps
-                << ", Newton " << result.newton_steps << " vs "
-                << result.cold_newton_steps << ", loop 1 "
-                << result.friction_steps << " vs " << result.cold_friction_steps
-                << ", time " << result.time_solve << " s vs "
-                << result.cold_time_solve << " s; solutions differ by "
-                << result.cold_difference_v << " (v, energy norm), "
-                << result.cold_difference_l1 << " (l1)";
-        if (scene.effects().friction != FrictionLaw::none)
-          pcout << "\n   friction: " << result.n_stick << " stick, "
-                << result.n_slip << " slip nodes, total tangential force "
-                << result.tangential_force
-                << (result.friction_steps > 0 ?
-                      ", " + std::to_string(result.friction_steps) +
-                        " threshold (loop 1) steps" :
-                      std::string());
-        if (scene.effects().contact)
-          pcout << std::scientific << std::setprecision(2)
-                << "\n   Uzawa contraction rate " << result.uzawa_rate
-                << ": the last change of l1 understates its error, estimated "
-                << result.l1_error_estimate;
-        if (scene.effects().contact)
-          pcout << std::defaultfloat << '\n';
-        else
-          pcout << "   one linear elasticity solve: "
-                << result.linear_iterations << " CG iterations"
-                << seconds(result.time_solve) << '\n';
-
-        if (parameters.solver.time_reference_solve && scene.effects().contact)
-          pcout << "   reference: one linear solve on this mesh "
-                << result.reference_iterations << " CG iterations"
-                << seconds(result.time_reference)
-                << ", contact / linear = " << std::fixed << std::setprecision(2)
-                << (result.time_assembly + result.time_solve) /
-                     (result.time_assembly + result.time_reference)
-                << std::defaultfloat << " (assembly included)\n";
-        {
-          Utilities::System::MemoryStats stats;
-          Utilities::System::get_memory_stats(stats);
-          result.memory_mb =
-            Utilities::MPI::sum(static_cast<double>(stats.VmHWM),
-                                mpi_communicator) /
-            1024.;
-        }
-        timed("postprocess", [&] { postprocess(result); });
-        pcout << std::scientific << std::setprecision(6)
-              << "   ||u||_L2 = " << result.u_l2;
-        if (scene.exact_displacement() != nullptr)
-          pcout << ", error L2 = " << result.l2_error
-                << ", H1 = " << result.h1_error;
-        pcout << std::defaultfloat << '\n';
-
-        // The output folder is made only now: a run that fails on its first
-        // mesh (bad input found late, no equilibrium) writes nothing.
-        if (cycle == 0)
-          {
-            if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-              std::filesystem::create_directories(parameters.output.directory);
-            MPI_Barrier(mpi_communicator);
-          }
-        result.time_output = timed("output", [&] { output_results(cycle); });
-        result.time_total =
-          (cycle > 0 ? cycle_results[cycle - 1].time_total : 0.) +
-          result.time_refine + result.time_setup + result.time_assembly +
-          result.time_solve + result.time_output;
-        write_cycle_table();
-        write_iteration_table();
-      }
-
-    print_convergence_table();
-    if (scene.exact_displacement() != nullptr)
-      {
-        pcout << "\nConvergence (rates for h halved per cycle):\n"
-              << "cycle       DoFs     L2 error  rate     H1 error  rate\n";
-        for (const CycleResult &r : cycle_results)
-          pcout << std::setw(5) << r.cycle << std::setw(11) << r.n_dofs
-                << std::scientific << std::setprecision(4) << std::setw(13)
-                << r.l2_error << std::fixed << std::setprecision(2)
-                << std::setw(6) << r.l2_rate << std::scientific
-                << std::setprecision(4) << std::setw(13) << r.h1_error
-                << std::fixed << std::setprecision(2) << std::setw(6)
-                << r.h1_rate << std::defaultfloat << '\n';
-      }
-    pcout << "Output written to " << parameters.output.directory << "/\n";
-    if (parameters.output.print_timing)
-      computing_timer.print_summary();
   }
 
   template class ContactProblem<2>;

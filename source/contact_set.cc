@@ -116,13 +116,13 @@ namespace dualcontact
 
     l1.assign(nodes.size(), 0.);
 
-    // Friction data at the nodes: F (Coulomb) or g (given), never negative.
-    const FrictionLaw law = scene.effects().friction;
-    friction              = law != FrictionLaw::none;
-    coulomb               = law == FrictionLaw::coulomb;
+    // Friction data at the nodes: the law's parameter (F or g), never
+    // negative, and the threshold it gives at zero pressure.
+    law      = &scene.effects().friction_law();
+    friction = law->has_friction();
     l2.assign(nodes.size(), Tensor<1, dim - 1>());
     threshold.assign(nodes.size(), 0.);
-    coefficient.assign(nodes.size(), 0.);
+    friction_parameter.assign(nodes.size(), 0.);
     if (friction)
       {
         double smallest = 0.;
@@ -130,12 +130,12 @@ namespace dualcontact
           {
             const double value =
               scene.friction_function()->value(nodes[s].position);
-            smallest                               = std::min(smallest, value);
-            (coulomb ? coefficient : threshold)[s] = value;
+            smallest              = std::min(smallest, value);
+            friction_parameter[s] = value;
+            threshold[s]          = law->threshold(value, 0.);
           }
         if (Utilities::MPI::min(smallest, comm) < 0.)
-          throw InputError(std::string("The entry <Friction/") +
-                             (coulomb ? "Coefficient" : "Threshold") +
+          throw InputError("The entry <Friction/" + law->parameter_entry() +
                              "> is negative at some contact node.",
                            exit_invalid_value);
       }
@@ -182,7 +182,7 @@ namespace dualcontact
         l1[s]            = std::max(raw, 0.);
         if (!friction)
           continue;
-        if (coulomb)
+        if (law->depends_on_pressure())
           threshold[s] = std::max(threshold_field[nodes[s].dofs[0]], 0.);
         Tensor<1, dim - 1> t;
         for (unsigned int k = 0; k < dim - 1; ++k)
@@ -192,6 +192,23 @@ namespace dualcontact
         l2[s]             = norm > threshold[s] ? t * (threshold[s] / norm) : t;
       }
     return {smallest_l1, excess};
+  }
+
+  template <int dim>
+  void
+  ContactSet<dim>::augmented_state(const TrilinosWrappers::MPI::Vector &v,
+                                   const double                         r,
+                                   std::vector<double>                 &z,
+                                   std::vector<Tensor<1, dim - 1>>     &y) const
+  {
+    z.resize(nodes.size());
+    y.resize(nodes.size());
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      {
+        z[s] = l1[s] + r * (normal_displacement(v, s) - nodes[s].gap0);
+        if (friction)
+          y[s] = l2[s] + r * tangential_displacement(v, s);
+      }
   }
 
   template class ContactSet<2>;

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <dualcontact/friction_law.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameters.h>
 
@@ -489,13 +490,17 @@ namespace dualcontact
   FrictionParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Friction");
+    // the laws registered in source/friction_laws/ (friction_law.h)
+    std::string names;
+    for (const std::string &name : friction_law_names())
+      names += (names.empty() ? "" : "|") + name;
     prm.declare_entry(
       "Law",
       "none",
-      Patterns::Selection("none|given|coulomb"),
-      "Friction on the contact boundary: 'none' (frictionless), 'given' "
-      "(Tresca: the threshold g below), 'coulomb' (|sigma_t| <= F |sigma_n| "
-      "with the coefficient F below).");
+      Patterns::Selection(names),
+      "Friction on the contact boundary, one of " + names +
+        ": 'none' (frictionless), 'given' (Tresca: the threshold g below), "
+        "'coulomb' (|sigma_t| <= F |sigma_n| with the coefficient F below).");
     prm.declare_entry("Coefficient",
                       "0",
                       Patterns::Anything(),
@@ -510,25 +515,28 @@ namespace dualcontact
       "Threshold iteration",
       "merged",
       Patterns::Selection("nested|merged"),
-      "Coulomb only, loop 1: 'nested' solves the given-friction problem with "
-      "the threshold g fixed, then sets g = F l1, until g settles "
-      "(successive approximations); 'merged' sets g = F l1 after every Uzawa "
-      "step (one loop). Both give the same solution within the tolerances.");
+      "Coulomb only, the threshold iteration: 'nested' solves the "
+      "given-friction problem with the threshold g fixed, then sets g = F "
+      "l1, until g settles (successive approximations); 'merged' sets g = F "
+      "l1 after every Uzawa step (one loop). Both give the same solution "
+      "within the tolerances.");
     prm.declare_entry("Initial threshold",
                       "zero",
                       Patterns::Selection("zero|frictionless"),
                       "Coulomb only: g^0 = 0, or g^0 = F times the contact "
                       "pressure of the frictionless problem (solved first).");
-    prm.declare_entry("Threshold tolerance",
-                      "1e-6",
-                      Patterns::Double(1e-14, 1.),
-                      "Coulomb only: loop 1 stops when |g_new - g| <= tol "
-                      "|g_new| (nodal Euclidean norms) [-].");
-    prm.declare_entry("Maximum threshold steps",
-                      "100",
-                      Patterns::Integer(1),
-                      "Coulomb only: loop 1 gives up (with an error naming "
-                      "the cause) after this many steps [-].");
+    prm.declare_entry(
+      "Threshold tolerance",
+      "1e-6",
+      Patterns::Double(1e-14, 1.),
+      "Coulomb only: the threshold iteration stops when |g_new - g| <= tol "
+      "|g_new| (nodal Euclidean norms) [-].");
+    prm.declare_entry(
+      "Maximum threshold steps",
+      "100",
+      Patterns::Integer(1),
+      "Coulomb only: the threshold iteration gives up (with an error naming "
+      "the cause) after this many steps [-].");
     prm.leave_subsection();
   }
 
@@ -536,20 +544,17 @@ namespace dualcontact
   FrictionParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Friction");
-    const std::string name = prm.get("Law");
-    law                    = name == "none"  ? FrictionLaw::none :
-                             name == "given" ? FrictionLaw::given :
-                                               FrictionLaw::coulomb;
-    coefficient            = prm.get("Coefficient");
-    threshold              = prm.get("Threshold");
-    strategy               = prm.get("Threshold iteration") == "nested" ?
-                               FrictionStrategy::nested :
-                               FrictionStrategy::merged;
-    initial_threshold      = prm.get("Initial threshold") == "zero" ?
-                               InitialThreshold::zero :
-                               InitialThreshold::frictionless;
-    tolerance              = prm.get_double("Threshold tolerance");
-    max_steps              = prm.get_integer("Maximum threshold steps");
+    law               = prm.get("Law");
+    coefficient       = prm.get("Coefficient");
+    threshold         = prm.get("Threshold");
+    strategy          = prm.get("Threshold iteration") == "nested" ?
+                          FrictionStrategy::nested :
+                          FrictionStrategy::merged;
+    initial_threshold = prm.get("Initial threshold") == "zero" ?
+                          InitialThreshold::zero :
+                          InitialThreshold::frictionless;
+    tolerance         = prm.get_double("Threshold tolerance");
+    max_steps         = prm.get_integer("Maximum threshold steps");
     prm.leave_subsection();
   }
 
@@ -594,50 +599,55 @@ namespace dualcontact
       "[stress/length^2], with L the body's size (longest side, or radius). "
       "It makes each Uzawa step strongly convex, also when only contact "
       "holds the body.");
-    prm.declare_entry("Uzawa tolerance",
-                      "1e-8",
-                      Patterns::Double(1e-15, 1.),
-                      "Loop 2 stops when the relative changes of l1 and of v "
-                      "and the relative constraint violation are all below "
-                      "this [-].");
-    prm.declare_entry("Maximum Uzawa steps",
-                      "500",
-                      Patterns::Integer(1),
-                      "Loop 2 gives up (with an error) after this many steps "
-                      "[-].");
+    prm.declare_entry(
+      "Uzawa tolerance",
+      "1e-8",
+      Patterns::Double(1e-15, 1.),
+      "The Uzawa iteration stops when the relative changes of l1 and of v "
+      "and the relative constraint violation are all below "
+      "this [-].");
+    prm.declare_entry(
+      "Maximum Uzawa steps",
+      "500",
+      Patterns::Integer(1),
+      "The Uzawa iteration gives up (with an error) after this many steps "
+      "[-].");
     prm.declare_entry(
       "Newton tolerance factor",
       "1e-2",
       Patterns::Double(1e-8, 1.),
-      "Loop 3's final tolerance on the relative gradient is this factor "
+      "The Newton iteration's final tolerance on the relative gradient is this factor "
       "times the Uzawa tolerance [-] (at most 0.01 is advised).");
     prm.declare_entry(
       "Initial inner tolerance",
       "1e-2",
       Patterns::Double(0., 1.),
-      "Loop 3's relative gradient tolerance in the first Uzawa step [-]; it "
+      "The Newton iteration's relative gradient tolerance in the first Uzawa step [-]; it "
       "shrinks geometrically from step to step (summable errors, as the "
       "convergence theorem needs) down to the final tolerance.");
-    prm.declare_entry("Inner tolerance reduction",
-                      "0.5",
-                      Patterns::Double(0., 1.),
-                      "Loop 3's tolerance stays below initial tolerance times "
-                      "this factor to the power (Uzawa step - 1) [-], in "
-                      "(0, 1): a geometric envelope that keeps the errors "
-                      "summable.");
-    prm.declare_entry("Inner tolerance factor",
-                      "1e-2",
-                      Patterns::Double(0., 1.),
-                      "Loop 3 stops once its gradient fell by this factor "
-                      "within the Uzawa step (and is below the envelope), or "
-                      "is below the final tolerance [-]: no Uzawa step is "
-                      "solved much more accurately than the iteration can "
-                      "use.");
-    prm.declare_entry("Maximum Newton steps",
-                      "50",
-                      Patterns::Integer(1),
-                      "Loop 3 gives up (with an error) after this many steps "
-                      "in one Uzawa step [-].");
+    prm.declare_entry(
+      "Inner tolerance reduction",
+      "0.5",
+      Patterns::Double(0., 1.),
+      "The Newton iteration's tolerance stays below initial tolerance times "
+      "this factor to the power (Uzawa step - 1) [-], in "
+      "(0, 1): a geometric envelope that keeps the errors "
+      "summable.");
+    prm.declare_entry(
+      "Inner tolerance factor",
+      "1e-2",
+      Patterns::Double(0., 1.),
+      "The Newton iteration stops once its gradient fell by this factor "
+      "within the Uzawa step (and is below the envelope), or "
+      "is below the final tolerance [-]: no Uzawa step is "
+      "solved much more accurately than the iteration can "
+      "use.");
+    prm.declare_entry(
+      "Maximum Newton steps",
+      "50",
+      Patterns::Integer(1),
+      "The Newton iteration gives up (with an error) after this many steps "
+      "in one Uzawa step [-].");
     prm.declare_entry(
       "Line search",
       "true",
@@ -1043,7 +1053,7 @@ namespace dualcontact
                            "zero vector.",
                            exit_invalid_value);
       }
-    else if (friction.law != FrictionLaw::none)
+    else if (friction.law != "none")
       throw InputError("The entry <Friction/Law> asks for friction, but no "
                        "boundary id has the condition 'contact'.",
                        exit_inconsistent);

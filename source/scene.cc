@@ -165,11 +165,7 @@ namespace dualcontact
         << (!contact      ? "no (no contact)" :
             zero_friction ? "no: the coefficient/threshold is zero, the "
                             "frictionless path runs" :
-            friction == FrictionLaw::none  ? "no" :
-            friction == FrictionLaw::given ? "given threshold (Tresca): "
-                                             "Uzawa on l1 and l2" :
-                                             "Coulomb: threshold iteration "
-                                             "(loop 1) around Uzawa on l1, l2")
+                            friction->description())
         << '\n'
         << "  body force                  : "
         << (body_force ? "yes" : "no (not assembled)") << '\n'
@@ -236,21 +232,20 @@ namespace dualcontact
     if (foundation_normal.norm() > 0)
       foundation_normal /= foundation_normal.norm();
 
-    effects_.contact  = !ids_with(BoundaryCondition::contact).empty();
-    effects_.friction = parameters.friction.law;
-    if (effects_.contact && parameters.friction.law != FrictionLaw::none)
+    effects_.contact            = !ids_with(BoundaryCondition::contact).empty();
+    effects_.friction           = create_friction_law(parameters.friction.law);
+    const std::string parameter = effects_.friction->parameter_entry();
+    if (effects_.contact && !parameter.empty())
       {
-        const bool coulomb = parameters.friction.law == FrictionLaw::coulomb;
-        const std::string expression = coulomb ?
+        const std::string expression = parameter == "Coefficient" ?
                                          parameters.friction.coefficient :
                                          parameters.friction.threshold;
-        const std::string entry =
-          coulomb ? "Friction/Coefficient" : "Friction/Threshold";
+        const std::string entry      = "Friction/" + parameter;
         friction_ = make_function<dim>(expression, 1, material, entry, length);
         if (is_zero_expression(expression))
           {
             effects_.zero_friction = true;
-            effects_.friction      = FrictionLaw::none;
+            effects_.friction      = create_friction_law("none");
             friction_.reset();
           }
         else if (friction_->value(center()) < 0. &&

@@ -1,10 +1,11 @@
 // The Problem class, in the shape of a deal.II tutorial: run() loops over
-// refinement cycles and calls setup_system, solve, output_results and
-// refine_mesh, each timed.
+// refinement cycles and calls one function per phase, each timed with
+// TimerOutput; each phase returns its own figures, and the report prints
+// them. The phases are public so that a program (a tutorial step) can call
+// them one by one and replace one, e.g. write the Uzawa loop itself.
 #ifndef dualcontact_contact_problem_h
 #define dualcontact_contact_problem_h
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 
@@ -21,11 +22,15 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <dualcontact/contact_set.h>
+#include <dualcontact/contact_system.h>
 #include <dualcontact/elasticity.h>
-#include <dualcontact/friction_iteration.h>
+#include <dualcontact/figures.h>
+#include <dualcontact/newton_solver.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/report.h>
 #include <dualcontact/scene.h>
-#include <dualcontact/uzawa_solver.h>
+#include <dualcontact/threshold_iteration.h>
+#include <dualcontact/uzawa_iteration.h>
 
 #include <iostream>
 #include <memory>
@@ -34,71 +39,6 @@
 namespace dualcontact
 {
   using namespace dealii;
-
-  /** What one refinement cycle produced: one row of the cycle table. */
-  struct CycleResult
-  {
-    unsigned int             cycle             = 0;
-    types::global_cell_index n_cells           = 0;
-    types::global_dof_index  n_dofs            = 0;
-    unsigned int             linear_iterations = 0;
-    double                   u_l2              = 0.; // ||u||_L2
-    double                   l2_error          = 0.; // vs the exact solution
-    double                   h1_error          = 0.;
-    double                   l2_rate           = 0.; // log2(e_{k-1}/e_k)
-    double                   h1_rate           = 0.;
-    // contact (zero without a contact boundary)
-    types::global_dof_index n_contact_nodes   = 0;
-    types::global_dof_index n_active          = 0;
-    unsigned int            uzawa_steps       = 0;
-    unsigned int            newton_steps      = 0;
-    unsigned int            amg_setups        = 0;
-    unsigned int            friction_steps    = 0; // loop 1 steps
-    types::global_dof_index n_stick           = 0;
-    types::global_dof_index n_slip            = 0;
-    double                  tangential_force  = 0.; // |sum_s m_s l2_s|
-    double                  uzawa_rate        = 0.; // observed contraction
-    double                  l1_error_estimate = 0.; // relative, from the rate
-    double                  contact_force     = 0.; // sum_s m_s l1_s
-    double normal_load        = 0.;      // net load along -n (toward Gamma_C)
-    double max_pressure       = 0.;      // max_s l1_s
-    double contact_half_width = 0.;      // 2D: half the extent
-                                         // of the active nodes
-                                         // along t
-    double contact_edge_half_width = 0.; // 2D: the same, with the edges
-                                         // extrapolated (l1^2 linear)
-    double pressure_error = 0.;          // relative L2 on Gamma_C
-    // relative errors against Exact solution/Contact half-width and Peak
-    // pressure (0 where not known)
-    double                  half_width_error    = 0.;
-    double                  peak_pressure_error = 0.;
-    types::global_dof_index n_hanging_contact   = 0;     // hanging on Gamma_C
-    bool                    warm_start          = false; // nested iteration
-    // the carried multipliers on this mesh before their projection: the
-    // smallest l1 and the largest |l2| - g, relative to the largest
-    // multiplier and the largest g
-    double carried_min_l1     = 0.;
-    double carried_max_excess = 0.;
-    // Refinement/Compare with cold start: the same mesh solved from zero
-    unsigned int cold_uzawa_steps    = 0;
-    unsigned int cold_newton_steps   = 0;
-    unsigned int cold_friction_steps = 0;
-    double       cold_time_solve     = 0.; // [s], not in time_solve
-    double       cold_difference_v   = 0.; // |v - v_cold|_a / |v_cold|_a
-    double       cold_difference_l1  = 0.; // the same for l1 (weighted)
-    double       r                   = 0.; // augmentation used
-    double       chi                 = 0.; // proximal weight used
-    double       time_setup          = 0.; // wall times [s]
-    double       time_assembly       = 0.;
-    double       time_solve          = 0.;
-    double       time_output         = 0.;
-    double       time_refine = 0.; // marking, refinement, transfer (to here)
-    double       time_total  = 0.; // all phases of all cycles up to here
-    // benchmarks (Solver/Time a reference linear solve)
-    double       time_reference       = 0.; // AMG + CG of one solve
-    unsigned int reference_iterations = 0;
-    double       memory_mb            = 0.; // peak RSS, all ranks
-  };
 
   template <int dim>
   class ContactProblem
@@ -119,31 +59,121 @@ namespace dualcontact
     void
     run();
 
+    // ---------------------------------------------------------- the phases
+
+    /** The coarse mesh; checks that no rigid motion is left unheld. */
+    void
+    make_grid();
+
+    /** DoFs, constraints (hanging nodes, Dirichlet, sliders), matrices. */
+    MeshFigures
+    setup_system(const unsigned int cycle);
+
+    /**
+     * Nested iteration: interpolate v, the multipliers and the threshold
+     * carried across the last refinement onto the new DoFs (nothing on the
+     * first mesh, or without <Refinement/Nested iteration>).
+     */
+    TransferFigures
+    transfer_fields();
+
+    /** K = A + chi M (with contact), M, and the load b. */
+    void
+    assemble_system();
+
+    /**
+     * One linear elasticity solve, or the contact solve: the threshold
+     * iteration around the Uzawa iteration around the Newton iteration, from
+     * the carried fields or from zero.
+     */
+    SolveFigures
+    solve();
+
+    /**
+     * The first part of the contact solve: the contact nodes and their
+     * weights, r, the equilibrium check. solve() calls it; a program that
+     * writes its own loops calls it, then works on contact_system() and
+     * contact().
+     */
+    SolveFigures
+    prepare_contact_solve();
+
+    /** Contact force, peak pressure, width of the zone, pressure errors. */
+    ContactZoneFigures
+    measure_contact_zone() const;
+
+    /**
+     * With <Refinement/Compare with cold start>: the current mesh solved
+     * again from v = 0, l1 = l2 = 0, and the difference of the solutions.
+     */
+    ColdStartFigures
+    compare_with_cold_start();
+
+    /** Norms of u and of its error against an exact solution. */
+    ErrorNorms
+    postprocess() const;
+
+    /** The vtu/pvtu/pvd output of this cycle (if asked for). */
+    void
+    output_results(const unsigned int cycle);
+
+    /** Mark (globally or by an indicator), prepare the transfer, refine. */
+    void
+    refine_mesh();
+
+    // ------------------------------------------------------- what it holds
+
     const std::vector<CycleResult> &
     results() const
     {
-      return cycle_results;
+      return report.cycles();
     }
 
-    /** Every Newton and Uzawa step of every cycle (empty without contact). */
+    /** Every Newton, Uzawa and threshold step of every cycle. */
     const std::vector<IterationRecord> &
     iterations() const
     {
-      return iteration_log;
+      return report.iterations();
     }
 
-    /** The contact nodes of this rank with their multipliers (last cycle). */
+    /** The contact nodes of this rank with their multipliers. */
     const ContactSet<dim> &
     contact() const
     {
       return contact_set;
     }
+    ContactSet<dim> &
+    contact()
+    {
+      return contact_set;
+    }
 
-    /** The displacement of the last cycle (ghosted). */
+    /** The displacement (ghosted). */
     const TrilinosWrappers::MPI::Vector &
     displacement() const
     {
       return solution;
+    }
+
+    /** The contact problem's system, after prepare_contact_solve(). */
+    ContactSystem
+    contact_system() const;
+
+    /**
+     * A first guess for the contact solve: the carried displacement or zero,
+     * with the prescribed boundary values (owned entries).
+     */
+    TrilinosWrappers::MPI::Vector
+    initial_displacement() const;
+
+    /** Store `v` (owned entries) as the solution of this mesh. */
+    void
+    set_displacement(const TrilinosWrappers::MPI::Vector &v);
+
+    ElasticSolver<dim> &
+    linear_solver()
+    {
+      return elastic_solver;
     }
 
     const Scene<dim> &
@@ -152,59 +182,39 @@ namespace dualcontact
       return scene;
     }
 
+    Report<dim> &
+    get_report()
+    {
+      return report;
+    }
+
   private:
-    void
-    make_grid();
-    void
-    setup_system();
-    void
-    assemble_system();
-    void
-    solve();
-    void
+    SolveFigures
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
-    void
+    SolveFigures
     solve_contact(TrilinosWrappers::MPI::Vector &v);
-    void
-    measure_contact_zone(CycleResult &result) const;
+    /** Throws if no equilibrium can exist; returns N / |Gamma_C| if only
+     * friction holds a tangential load (see ThresholdIteration), else 0. */
     double
     check_equilibrium() const;
     double
     net_load(const Tensor<1, dim> &direction) const;
-    void
-    postprocess(CycleResult &result);
-    void
-    output_results(const unsigned int cycle);
-    void
-    write_cycle_table() const;
-    void
-    write_iteration_table() const;
-    void
-    refine_mesh();
     const Vector<float> &
     refinement_indicator();
     void
-    mark_cells_for_refinement();
-    void
     multiplier_fields(TrilinosWrappers::MPI::Vector &multipliers,
                       TrilinosWrappers::MPI::Vector &threshold) const;
-    void
-    interpolate_carried_fields();
-    void
-    print_convergence_table() const;
-    void
-    print_header() const;
 
-    // MPI and screen
-    MPI_Comm           mpi_communicator;
-    ConditionalOStream pcout;
+    // MPI
+    MPI_Comm mpi_communicator;
 
     // the scene (built first: bad input throws before anything else exists)
     const Parameters &parameters;
     const Scene<dim>  scene;
 
-    // timing; the summary is printed at the end of a successful run()
-    TimerOutput computing_timer;
+    // timing and everything the run tells
+    mutable TimerOutput computing_timer; // const phases are timed too
+    Report<dim>         report;
 
     // mesh and finite element
     parallel::distributed::Triangulation<dim> triangulation;
@@ -222,17 +232,21 @@ namespace dualcontact
     AffineConstraints<double> homogeneous_constraints;
 
     // linear algebra
-    TrilinosWrappers::SparseMatrix system_matrix;
+    TrilinosWrappers::SparseMatrix system_matrix; // K = A (+ chi M)
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::SparseMatrix mass_matrix; // only with contact
     TrilinosWrappers::MPI::Vector  solution;    // ghosted
     ElasticSolver<dim>             elastic_solver;
 
-    // contact: nodes and multipliers, loops 2 and 3, their log
-    ContactSet<dim>              contact_set;
-    UzawaSolver<dim>             uzawa_solver;
-    FrictionIteration<dim>       friction_iteration;
-    std::vector<IterationRecord> iteration_log;
+    // contact: the nodes and multipliers, the constants r and chi, and the
+    // three loops (doc/theory.md §3)
+    ContactSet<dim>         contact_set;
+    double                  r                         = 0.;
+    double                  chi                       = 0.;
+    double                  held_by_friction_pressure = 0.;
+    NewtonSolver<dim>       newton;
+    UzawaIteration<dim>     uzawa;
+    ThresholdIteration<dim> threshold_iteration;
 
     // nested iteration: the transfer of v, the multipliers and the
     // threshold across a refinement, and what it carried to the new mesh
@@ -248,8 +262,7 @@ namespace dualcontact
     Vector<float> indicator;
     bool          indicator_valid = false;
 
-    // per-cycle figures, and the (cycle, file) list of the .pvd record
-    std::vector<CycleResult>                    cycle_results;
+    // the (cycle, file) list of the .pvd record
     std::vector<std::pair<double, std::string>> pvtu_records;
   };
 } // namespace dualcontact

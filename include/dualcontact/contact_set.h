@@ -1,5 +1,5 @@
-// The discrete contact boundary (DESIGN.md §3): the contact nodes on Gamma_C
-// with their nodal-quadrature weights m_s, the foundation normal n and
+// The discrete contact boundary (doc/theory.md §4): the contact nodes on
+// Gamma_C with their nodal-quadrature weights m_s, the foundation normal n and
 // tangent t, the initial gaps g0, and the multipliers that live on them.
 #ifndef dualcontact_contact_set_h
 #define dualcontact_contact_set_h
@@ -14,6 +14,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dualcontact/friction_law.h>
 #include <dualcontact/scene.h>
 
 #include <array>
@@ -87,6 +88,40 @@ namespace dualcontact
     }
 
     /**
+     * At every local node the arguments of the positive part and of the
+     * projection in the Uzawa updates (doc/theory.md §3.2):
+     * z_s = l1_s + r (v_n(s) - g0_s) and, with friction, y_s = l2_s + r v_t(s).
+     */
+    void
+    augmented_state(const TrilinosWrappers::MPI::Vector &v,
+                    const double                         r,
+                    std::vector<double>                 &z,
+                    std::vector<Tensor<1, dim - 1>>     &y) const;
+
+    /** l1 = l2 = 0 and g the threshold at zero pressure: a cold start. */
+    void
+    reset_multipliers()
+    {
+      for (unsigned int s = 0; s < nodes.size(); ++s)
+        {
+          l1[s] = 0.;
+          l2[s] = Tensor<1, dim - 1>();
+          threshold[s] =
+            friction ? law->threshold(friction_parameter[s], 0.) : 0.;
+        }
+    }
+
+    /**
+     * The threshold the friction law gives at local node s for its current
+     * pressure l1_s (Coulomb: F_s l1_s).
+     */
+    double
+    threshold_from_pressure(const unsigned int s) const
+    {
+      return law->threshold(friction_parameter[s], l1[s]);
+    }
+
+    /**
      * Status of local node s at convergence: 0 separated (l1 = 0), 1 in
      * contact and sticking (or in contact without friction), 2 slipping
      * (|l2| = g).
@@ -117,10 +152,10 @@ namespace dualcontact
     /**
      * The reverse of write_fields, at the nodes of this set (owned
      * entries), projected onto the admissible set: l1 >= 0, g >= 0 and
-     * |l2| <= g. g is read only under Coulomb's law (a given threshold is
-     * the scene's), l2 only with friction. Returns, over this rank's
-     * nodes and before the projection, the smallest l1 and the largest
-     * |l2| - g: how far the fields read were from admissible.
+     * |l2| <= g. g is read only if the law makes it depend on the pressure
+     * (a given threshold is the scene's), l2 only with friction. Returns, over
+     * this rank's nodes and before the projection, the smallest l1 and the
+     * largest |l2| - g: how far the fields read were from admissible.
      */
     std::pair<double, double>
     read_fields(const TrilinosWrappers::MPI::Vector &multipliers,
@@ -172,15 +207,17 @@ namespace dualcontact
     std::vector<double> l1;
 
     /**
-     * Friction: whether the tangential terms run at all, the tangential
-     * multiplier l2 (|l2| <= g, in the tangent basis), the threshold g and,
-     * for Coulomb, the coefficient F at every local node.
+     * Friction: the law (chosen by the scene), whether the tangential terms
+     * run at all (the threshold iteration switches them off for a
+     * frictionless first solve), and at every local node the tangential
+     * multiplier l2 (|l2| <= g, in the tangent basis), the threshold g and
+     * the law's parameter (F for Coulomb, g for a given threshold).
      */
+    const FrictionLaw              *law      = nullptr;
     bool                            friction = false;
-    bool                            coulomb  = false; // g = F l1
     std::vector<Tensor<1, dim - 1>> l2;
     std::vector<double>             threshold;
-    std::vector<double>             coefficient;
+    std::vector<double>             friction_parameter;
 
   private:
     types::global_dof_index n_global  = 0;

@@ -23,7 +23,7 @@ namespace dualcontact
     quarter_disc
   };
 
-  /** The condition on one part of the boundary (DESIGN.md §1). */
+  /** The condition on one part of the boundary (doc/theory.md §1). */
   enum class BoundaryCondition
   {
     free,         // zero traction
@@ -34,14 +34,7 @@ namespace dualcontact
     contact       // unilateral contact with the rigid foundation (Gamma_C)
   };
 
-  enum class FrictionLaw
-  {
-    none,
-    given,
-    coulomb
-  };
-
-  /** Loop 1: how the Coulomb threshold g = F l1 is iterated. */
+  /** The threshold iteration: how a pressure-dependent threshold is found. */
   enum class FrictionStrategy
   {
     nested, // successive approximations around converged Uzawa solves
@@ -149,11 +142,11 @@ namespace dualcontact
   /** Friction law on the contact boundary. */
   struct FrictionParameters
   {
-    FrictionLaw law = FrictionLaw::none;
+    std::string law = "none"; // a name registered in friction_law.h
     std::string coefficient;
     std::string threshold;
 
-    // loop 1 (Coulomb only)
+    // the threshold iteration (laws whose threshold depends on l1)
     FrictionStrategy strategy          = FrictionStrategy::merged;
     InitialThreshold initial_threshold = InitialThreshold::zero;
     double           tolerance         = 1e-6;
@@ -166,8 +159,8 @@ namespace dualcontact
   };
 
   /**
-   * The solvers: CG + algebraic multigrid for every linear system, and the
-   * Uzawa method (loop 2) with its inner semi-smooth Newton (loop 3).
+   * The solvers: CG + algebraic multigrid for every linear system, the
+   * Uzawa iteration and, inside each of its steps, the Newton iteration.
    */
   struct SolverParameters
   {
@@ -175,12 +168,13 @@ namespace dualcontact
     unsigned int max_linear_iterations = 2000;
     bool         amg_rotation_modes    = true;
 
-    // loop 2: Uzawa on the modified Lagrangian
-    double       augmentation    = 10.;  // r_rel: r = r_rel E / h_C
+    // the Uzawa iteration on the modified Lagrangian (doc/theory.md §5):
+    // r = r_rel (lambda + 2 mu) / h_C, chi = chi_rel E / L^2
+    double       augmentation    = 10.;  // r_rel
     double       proximal        = 1e-3; // chi_rel: chi = chi_rel E / L^2
     double       uzawa_tolerance = 1e-8;
     unsigned int max_uzawa_steps = 500;
-    // loop 3: semi-smooth Newton
+    // the Newton iteration (semi-smooth, with an exact line search)
     double       newton_tolerance_factor   = 1e-2;
     double       initial_inner_tolerance   = 1e-2;
     double       inner_tolerance_reduction = 0.5;

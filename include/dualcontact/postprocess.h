@@ -11,6 +11,7 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <dualcontact/figures.h>
 #include <dualcontact/parameters.h>
 
 #include <set>
@@ -47,14 +48,6 @@ namespace dualcontact
   private:
     const double lambda;
     const double mu;
-  };
-
-  /** The norms of u - u_exact (or of u itself without an exact solution). */
-  struct ErrorNorms
-  {
-    double l2      = 0.; // ||u - u_exact||_L2
-    double h1_semi = 0.; // |u - u_exact|_H1
-    double u_l2    = 0.; // ||u||_L2
   };
 
   /**

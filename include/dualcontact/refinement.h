@@ -1,4 +1,4 @@
-// Refinement indicators between cycles (issue 5): deal.II's Kelly
+// Refinement indicators between cycles: deal.II's Kelly
 // estimator, and the 'contact' indicator, which adds a residual of the
 // contact tractions on Gamma_C.
 #ifndef dualcontact_refinement_h

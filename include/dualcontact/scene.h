@@ -1,6 +1,6 @@
 // A scene: the body's geometry and mesh, which condition holds on which
 // boundary part, the loads as functions, the foundation, and from all of that
-// the list of effects the solver has to simulate (DESIGN.md §4).
+// the list of effects the solver has to simulate (doc/theory.md §1).
 #ifndef dualcontact_scene_h
 #define dualcontact_scene_h
 
@@ -10,6 +10,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <dualcontact/friction_law.h>
 #include <dualcontact/parameters.h>
 
 #include <map>
@@ -24,13 +25,20 @@ namespace dualcontact
   /** What a scene calls for; the solver composes only these. */
   struct Effects
   {
-    bool        contact  = false;
-    FrictionLaw friction = FrictionLaw::none;
-    // the scene asked for friction whose coefficient or threshold is zero:
-    // the frictionless path runs (and the log says so)
-    bool zero_friction = false;
-    bool body_force    = false;
-    bool tractions     = false;
+    bool contact = false;
+    // the friction law, chosen once from <Friction/Law>; frictionless
+    // ('none') also when the scene asked for friction whose coefficient or
+    // threshold is zero (zero_friction: the log says so)
+    std::shared_ptr<const FrictionLaw> friction;
+    bool                               zero_friction = false;
+    bool                               body_force    = false;
+    bool                               tractions     = false;
+
+    const FrictionLaw &
+    friction_law() const
+    {
+      return *friction;
+    }
 
     /** One line per effect, saying what runs and what does not. */
     std::string

@@ -1,4 +1,4 @@
-// Coulomb and given friction (issue 4): the friction law at convergence,
+// Coulomb and given friction: the friction law at convergence,
 // equilibrium of the sliding block, F = 0, Hertz with friction, the two
 // threshold iterations, ranks. Every assertion is on a value that is the
 // same on all ranks.
@@ -58,7 +58,8 @@ namespace
         if (coulomb)
           check.threshold_gap =
             std::max(check.threshold_gap,
-                     std::abs(c.threshold[s] - c.coefficient[s] * c.l1[s]));
+                     std::abs(c.threshold[s] -
+                              c.friction_parameter[s] * c.l1[s]));
         if (c.status(s) == 1)
           {
             ++check.n_stick;
@@ -97,10 +98,11 @@ TEST_CASE("Sliding block: equilibrium, partial slip and the friction law at "
       Run                run("sliding_block.prm",
               one_cycle + friction("  set Threshold iteration = " + strategy));
       const CycleResult &r = run.last();
-      INFO(strategy << ": stick " << r.n_stick << ", slip " << r.n_slip
-                    << ", tangential force " << r.tangential_force);
-      CHECK(std::abs(r.contact_force - 2.) <= 1e-8 * 2.);
-      CHECK(std::abs(r.tangential_force - 0.7) <= 1e-8 * 0.7);
+      INFO(strategy << ": stick " << r.solve.n_stick << ", slip "
+                    << r.solve.n_slip << ", tangential force "
+                    << r.zone.tangential_force);
+      CHECK(std::abs(r.zone.contact_force - 2.) <= 1e-8 * 2.);
+      CHECK(std::abs(r.zone.tangential_force - 0.7) <= 1e-8 * 0.7);
       const LawCheck law = check_law(run, true);
       CHECK(law.n_stick > 0);
       CHECK(law.n_slip > 0);
@@ -126,12 +128,12 @@ TEST_CASE("Coulomb friction with F = 0 reproduces the frictionless numbers "
     zero.screen.str().find("the frictionless path runs") != std::string::npos;
   CHECK(Utilities::MPI::broadcast(MPI_COMM_WORLD, says_so, 0));
   const CycleResult &a = frictionless.last(), &b = zero.last();
-  CHECK(a.uzawa_steps == b.uzawa_steps);
-  CHECK(a.newton_steps == b.newton_steps);
-  CHECK(a.linear_iterations == b.linear_iterations);
-  CHECK(a.max_pressure == b.max_pressure);
-  CHECK(a.contact_force == b.contact_force);
-  CHECK(a.pressure_error == b.pressure_error);
+  CHECK(a.solve.uzawa_steps == b.solve.uzawa_steps);
+  CHECK(a.solve.newton_steps == b.solve.newton_steps);
+  CHECK(a.solve.cg_iterations == b.solve.cg_iterations);
+  CHECK(a.zone.max_pressure == b.zone.max_pressure);
+  CHECK(a.zone.contact_force == b.zone.contact_force);
+  CHECK(a.zone.pressure_error == b.zone.pressure_error);
 }
 
 TEST_CASE("Hertz with friction: odd tangential traction, stick zone at the "
@@ -172,8 +174,8 @@ TEST_CASE("Hertz with friction: odd tangential traction, stick zone at the "
       REQUIRE(std::abs((*mirror)[0] + x) < 1e-9);
       oddness = std::max(oddness, std::abs(l2 + (*mirror)[1]));
     }
-  const double a_rough = rough.last().contact_edge_half_width;
-  const double a_free  = frictionless.last().contact_edge_half_width;
+  const double a_rough = rough.last().zone.edge_half_width;
+  const double a_free  = frictionless.last().zone.edge_half_width;
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::cout << "Hertz with friction (F = 0.3, nu = 0.3): c/a = "
               << c_stick / a_rough << ", half-width " << a_rough
@@ -188,9 +190,9 @@ TEST_CASE("Hertz with friction: odd tangential traction, stick zone at the "
   // couples into the normal pressure: measured, the zone narrows by 2.5 %
   // on every mesh (and by 0.1 % for nu = 0.49, where beta -> 0).
   CHECK(std::abs(a_rough / a_free - 1.) <= 0.03);
-  CHECK(
-    std::abs(rough.last().contact_force - frictionless.last().contact_force) <=
-    1e-8 * frictionless.last().contact_force);
+  CHECK(std::abs(rough.last().zone.contact_force -
+                 frictionless.last().zone.contact_force) <=
+        1e-8 * frictionless.last().zone.contact_force);
   const LawCheck law = check_law(rough, true);
   CHECK(law.excess <= 1e-8);
   CHECK(law.threshold_gap <= 1e-6);
@@ -208,21 +210,21 @@ TEST_CASE("The nested and the merged threshold iterations agree", "[friction]")
       const double difference = max_pressure_difference(merged.pressures(),
                                                         nested.pressures(),
                                                         n_matched);
-      const double peak       = merged.last().max_pressure;
+      const double peak       = merged.last().zone.max_pressure;
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cout << scene << ": merged " << merged.last().uzawa_steps
-                  << " Uzawa / " << merged.last().newton_steps << " Newton / "
-                  << merged.last().linear_iterations << " CG; nested "
-                  << nested.last().friction_steps << " loop-1 / "
-                  << nested.last().uzawa_steps << " Uzawa / "
-                  << nested.last().newton_steps << " Newton / "
-                  << nested.last().linear_iterations << " CG; max |dl1| / peak "
-                  << difference / peak << "\n";
-      CHECK(n_matched == merged.last().n_contact_nodes);
+        std::cout << scene << ": merged " << merged.last().solve.uzawa_steps
+                  << " Uzawa / " << merged.last().solve.newton_steps
+                  << " Newton / " << merged.last().solve.cg_iterations
+                  << " CG; nested " << nested.last().solve.threshold_steps
+                  << " threshold / " << nested.last().solve.uzawa_steps
+                  << " Uzawa / " << nested.last().solve.newton_steps
+                  << " Newton / " << nested.last().solve.cg_iterations
+                  << " CG; max |dl1| / peak " << difference / peak << "\n";
+      CHECK(n_matched == merged.last().solve.n_contact_nodes);
       CHECK(difference <= 1e-5 * peak);
-      CHECK(std::abs(merged.last().tangential_force -
-                     nested.last().tangential_force) <=
-            1e-5 * merged.last().contact_force);
+      CHECK(std::abs(merged.last().zone.tangential_force -
+                     nested.last().zone.tangential_force) <=
+            1e-5 * merged.last().zone.contact_force);
     }
 }
 
@@ -231,11 +233,12 @@ TEST_CASE("Friction: one and several MPI ranks agree", "[friction][mpi]")
   Run world("sliding_block.prm", one_cycle);
   Run alone("sliding_block.prm", one_cycle, MPI_COMM_SELF);
   const auto [difference, n_matched] = compare_ranks(world, alone);
-  CHECK(n_matched == world.last().n_contact_nodes);
-  CHECK(difference <= 1e-6 * world.last().max_pressure);
-  CHECK(Utilities::MPI::max(std::abs(world.last().tangential_force -
-                                     alone.last().tangential_force),
+  CHECK(n_matched == world.last().solve.n_contact_nodes);
+  CHECK(difference <= 1e-6 * world.last().zone.max_pressure);
+  CHECK(Utilities::MPI::max(std::abs(world.last().zone.tangential_force -
+                                     alone.last().zone.tangential_force),
                             MPI_COMM_WORLD) <= 1e-9);
-  CHECK(Utilities::MPI::min(world.last().n_slip == alone.last().n_slip ? 1 : 0,
-                            MPI_COMM_WORLD) == 1);
+  CHECK(Utilities::MPI::min(
+          world.last().solve.n_slip == alone.last().solve.n_slip ? 1 : 0,
+          MPI_COMM_WORLD) == 1);
 }

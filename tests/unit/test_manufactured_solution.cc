@@ -69,26 +69,43 @@ TEST_CASE("Manufactured solution: Q1 converges with rate 2 in L2 and 1 in H1",
   for (unsigned int k = 0; k < results.size(); ++k)
     {
       const CycleResult &r = results[k];
-      INFO("cycle " << k << ": " << r.n_dofs << " DoFs, L2 error " << r.l2_error
-                    << " (rate " << r.l2_rate << "), H1 error " << r.h1_error
-                    << " (rate " << r.h1_rate << ")");
-      CHECK(r.cycle == k);
-      CHECK(r.l2_error > 0);
-      CHECK(r.h1_error > 0);
+      // rates per DoF: dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}), the order
+      // in h under uniform refinement
+      const auto rate = [&](const double previous, const double current) {
+        return k == 0 ?
+                 0. :
+                 2. * std::log(previous / current) /
+                   std::log(double(r.mesh.n_dofs) / results[k - 1].mesh.n_dofs);
+      };
+      const double l2_rate =
+        k == 0 ? 0. : rate(results[k - 1].errors.l2, r.errors.l2);
+      const double h1_rate =
+        k == 0 ? 0. : rate(results[k - 1].errors.h1_semi, r.errors.h1_semi);
+      INFO("cycle " << k << ": " << r.mesh.n_dofs << " DoFs, L2 error "
+                    << r.errors.l2 << " (rate " << l2_rate << "), H1 error "
+                    << r.errors.h1_semi << " (rate " << h1_rate << ")");
+      CHECK(r.mesh.cycle == k);
+      CHECK(r.errors.l2 > 0);
+      CHECK(r.errors.h1_semi > 0);
       // ||u_exact||_L2 is about 0.75 for this solution
-      CHECK(r.u_l2 == Approx(0.75).epsilon(0.02));
+      CHECK(r.errors.u_l2 == Approx(0.75).epsilon(0.02));
       if (k >= 1)
         {
-          CHECK(r.l2_rate == Approx(2.).margin(0.1));
-          CHECK(r.h1_rate == Approx(1.).margin(0.1));
-          CHECK(r.n_cells == 4 * results[k - 1].n_cells);
+          // per DoF, the coarsest pair overstates the order (its DoF
+          // ratio, 578/162, is well below 4 because of the boundary); from
+          // cycle 2 on the rates are within 0.1 of 2 and 1
+          const double margin = k == 1 ? 0.2 : 0.1;
+          CHECK(l2_rate == Approx(2.).margin(margin));
+          CHECK(h1_rate == Approx(1.).margin(margin));
+          CHECK(r.mesh.n_cells == 4 * results[k - 1].mesh.n_cells);
         }
     }
-  // the screen output (rank 0 only) ends with the convergence table
+  // the screen output (rank 0 only) ends with the summary table, with the
+  // rates per DoF that deal.II's ConvergenceTable computes
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const bool has_table =
-    screen.str().find("Convergence (rates for h halved per cycle)") !=
-    std::string::npos;
+    screen.str().find("rate per DoF") != std::string::npos &&
+    screen.str().find("L2 err") != std::string::npos;
   CHECK(Utilities::MPI::min(static_cast<unsigned int>(has_table || !root),
                             MPI_COMM_WORLD) == 1);
 }
@@ -113,18 +130,20 @@ TEST_CASE("Manufactured solution: every rank alone and all ranks together "
   for (unsigned int k = 0; k < alone.size(); ++k)
     {
       INFO("cycle " << k);
-      CHECK(alone[k].n_dofs == together[k].n_dofs);
+      CHECK(alone[k].mesh.n_dofs == together[k].mesh.n_dofs);
       // the largest difference over the ranks, so all ranks check the same
       const double l2 =
-        Utilities::MPI::max(relative_difference(alone[k].l2_error,
-                                                together[k].l2_error),
+        Utilities::MPI::max(relative_difference(alone[k].errors.l2,
+                                                together[k].errors.l2),
                             MPI_COMM_WORLD);
       const double h1 =
-        Utilities::MPI::max(relative_difference(alone[k].h1_error,
-                                                together[k].h1_error),
+        Utilities::MPI::max(relative_difference(alone[k].errors.h1_semi,
+                                                together[k].errors.h1_semi),
                             MPI_COMM_WORLD);
-      const double u = Utilities::MPI::max(
-        relative_difference(alone[k].u_l2, together[k].u_l2), MPI_COMM_WORLD);
+      const double u =
+        Utilities::MPI::max(relative_difference(alone[k].errors.u_l2,
+                                                together[k].errors.u_l2),
+                            MPI_COMM_WORLD);
       INFO("relative differences: L2 error " << l2 << ", H1 error " << h1
                                              << ", ||u||_L2 " << u);
       // The discrete solutions agree to round-off and the solver tolerance.

@@ -1,4 +1,4 @@
-// Nested meshes, adaptive refinement and nested iteration (issue 5): the
+// Nested meshes, adaptive refinement and nested iteration: the
 // error falls over adaptive cycles, hanging nodes on Gamma_C (3D), the
 // carried multipliers, nested iteration against a cold start, adaptive
 // against global refinement, ranks. Every assertion is on a value that is
@@ -90,21 +90,24 @@ TEST_CASE("Adaptive Hertz ('contact' indicator): the pressure error falls "
   REQUIRE(results.size() == 5);
   for (std::size_t k = 1; k < results.size(); ++k)
     {
-      INFO("cycle " << k << ": " << results[k].n_dofs << " DoFs, error "
-                    << results[k].pressure_error << " after "
-                    << results[k - 1].pressure_error);
-      CHECK(results[k].pressure_error < results[k - 1].pressure_error);
+      INFO("cycle " << k << ": " << results[k].mesh.n_dofs << " DoFs, error "
+                    << results[k].zone.pressure_error << " after "
+                    << results[k - 1].zone.pressure_error);
+      CHECK(results[k].zone.pressure_error <
+            results[k - 1].zone.pressure_error);
       // refined where it matters: fewer than twice the DoFs per cycle
-      CHECK(results[k].n_dofs < 2 * results[k - 1].n_dofs);
-      CHECK(results[k].warm_start);
+      CHECK(results[k].mesh.n_dofs < 2 * results[k - 1].mesh.n_dofs);
+      CHECK(results[k].transfer.warm_start);
     }
-  std::cout << "adaptive Hertz: pressure error " << results[0].pressure_error
-            << " (" << results[0].n_dofs << " DoFs) -> "
-            << results.back().pressure_error << " (" << results.back().n_dofs
-            << " DoFs)" << std::endl;
-  CHECK(results.back().pressure_error <= results[0].pressure_error / 5.);
-  CHECK(std::abs(results.back().contact_force - results.back().normal_load) <=
-        1e-8 * results.back().normal_load);
+  std::cout << "adaptive Hertz: pressure error "
+            << results[0].zone.pressure_error << " (" << results[0].mesh.n_dofs
+            << " DoFs) -> " << results.back().zone.pressure_error << " ("
+            << results.back().mesh.n_dofs << " DoFs)" << std::endl;
+  CHECK(results.back().zone.pressure_error <=
+        results[0].zone.pressure_error / 5.);
+  CHECK(std::abs(results.back().zone.contact_force -
+                 results.back().solve.normal_load) <=
+        1e-8 * results.back().solve.normal_load);
   require_contact_conditions(run);
 }
 
@@ -115,17 +118,18 @@ TEST_CASE("3D adaptive Hertz (ball on a plane): hanging nodes on Gamma_C, "
   SceneRun<3> run("", hertz_ball);
   const auto &results = run.problem->results();
   REQUIRE(results.size() == 2);
-  std::cout << "3D Hertz: " << results[1].n_dofs << " DoFs, "
-            << results[1].n_contact_nodes << " contact nodes, "
-            << results[1].n_hanging_contact
+  std::cout << "3D Hertz: " << results[1].mesh.n_dofs << " DoFs, "
+            << results[1].solve.n_contact_nodes << " contact nodes, "
+            << results[1].solve.n_hanging_contact
             << " hanging nodes on Gamma_C, pressure error "
-            << results[0].pressure_error << " -> " << results[1].pressure_error
-            << std::endl;
-  CHECK(results[1].n_hanging_contact > 0);
-  CHECK(results[1].pressure_error < results[0].pressure_error);
-  CHECK(std::abs(results[1].peak_pressure_error) < 0.05);
+            << results[0].zone.pressure_error << " -> "
+            << results[1].zone.pressure_error << std::endl;
+  CHECK(results[1].solve.n_hanging_contact > 0);
+  CHECK(results[1].zone.pressure_error < results[0].zone.pressure_error);
+  CHECK(std::abs(results[1].zone.peak_pressure_error) < 0.05);
   for (const CycleResult &r : results)
-    CHECK(std::abs(r.contact_force - r.normal_load) <= 1e-8 * r.normal_load);
+    CHECK(std::abs(r.zone.contact_force - r.solve.normal_load) <=
+          1e-8 * r.solve.normal_load);
   require_contact_conditions(run);
 }
 
@@ -142,14 +146,16 @@ TEST_CASE("Carried multipliers are admissible on the refined (and coarsened) "
   for (std::size_t k = 1; k < results.size(); ++k)
     {
       const CycleResult &r = results[k];
-      INFO("cycle " << k << ": smallest carried l1 " << r.carried_min_l1
-                    << ", largest carried |l2| - g " << r.carried_max_excess);
-      CHECK(r.warm_start);
-      CHECK(r.carried_min_l1 >= -1e-14);
-      CHECK(r.carried_max_excess <= 1e-12);
+      INFO("cycle " << k << ": smallest carried l1 "
+                    << r.transfer.carried_min_l1
+                    << ", largest carried |l2| - g "
+                    << r.transfer.carried_max_excess);
+      CHECK(r.transfer.warm_start);
+      CHECK(r.transfer.carried_min_l1 >= -1e-14);
+      CHECK(r.transfer.carried_max_excess <= 1e-12);
       // slip nodes were carried with |l2| = g: the bound is attained
-      CHECK(r.carried_max_excess >= -1e-6);
-      CHECK(r.n_slip > 0);
+      CHECK(r.transfer.carried_max_excess >= -1e-6);
+      CHECK(r.solve.n_slip > 0);
     }
 }
 
@@ -166,16 +172,16 @@ TEST_CASE("Nested iteration reaches the cold start's solution on the same "
   for (std::size_t k = 1; k < results.size(); ++k)
     {
       const CycleResult &r = results[k];
-      std::cout << "cycle " << k << ": Uzawa " << r.uzawa_steps << " vs "
-                << r.cold_uzawa_steps << " cold, Newton " << r.newton_steps
-                << " vs " << r.cold_newton_steps << ", difference "
-                << r.cold_difference_v << " (v), " << r.cold_difference_l1
-                << " (l1)" << std::endl;
-      CHECK(r.warm_start);
-      CHECK(r.cold_difference_v <= 1e-6);
-      CHECK(r.cold_difference_l1 <= 1e-6);
-      CHECK(r.uzawa_steps < r.cold_uzawa_steps);
-      CHECK(r.newton_steps < r.cold_newton_steps);
+      std::cout << "cycle " << k << ": Uzawa " << r.solve.uzawa_steps << " vs "
+                << r.cold.uzawa_steps << " cold, Newton "
+                << r.solve.newton_steps << " vs " << r.cold.newton_steps
+                << ", difference " << r.cold.difference_v << " (v), "
+                << r.cold.difference_l1 << " (l1)" << std::endl;
+      CHECK(r.transfer.warm_start);
+      CHECK(r.cold.difference_v <= 1e-6);
+      CHECK(r.cold.difference_l1 <= 1e-6);
+      CHECK(r.solve.uzawa_steps < r.cold.uzawa_steps);
+      CHECK(r.solve.newton_steps < r.cold.newton_steps);
     }
 }
 
@@ -189,17 +195,18 @@ TEST_CASE("Adaptive refinement ('contact') reaches the pressure error of the "
   const CycleResult &finest  = global.last();
   const CycleResult *reached = nullptr;
   for (const CycleResult &r : adaptive.problem->results())
-    if (r.pressure_error <= finest.pressure_error)
+    if (r.zone.pressure_error <= finest.zone.pressure_error)
       {
         reached = &r;
         break;
       }
   REQUIRE(reached != nullptr);
-  std::cout << "global: " << finest.pressure_error << " with " << finest.n_dofs
-            << " DoFs; contact: " << reached->pressure_error << " with "
-            << reached->n_dofs << " DoFs (cycle " << reached->cycle << ")"
-            << std::endl;
-  CHECK(reached->n_dofs < finest.n_dofs / 2);
+  std::cout << "global: " << finest.zone.pressure_error << " with "
+            << finest.mesh.n_dofs
+            << " DoFs; contact: " << reached->zone.pressure_error << " with "
+            << reached->mesh.n_dofs << " DoFs (cycle " << reached->mesh.cycle
+            << ")" << std::endl;
+  CHECK(reached->mesh.n_dofs < finest.mesh.n_dofs / 2);
 }
 
 TEST_CASE("Adaptive refinement: one and several MPI ranks give the same "
@@ -209,9 +216,9 @@ TEST_CASE("Adaptive refinement: one and several MPI ranks give the same "
   const std::string three = refinement("set Number of cycles = 3");
   Run               world("hertz_adaptive.prm", three);
   Run               alone("hertz_adaptive.prm", three, MPI_COMM_SELF);
-  CHECK(Utilities::MPI::max(world.last().n_dofs, MPI_COMM_WORLD) ==
-        Utilities::MPI::min(alone.last().n_dofs, MPI_COMM_WORLD));
+  CHECK(Utilities::MPI::max(world.last().mesh.n_dofs, MPI_COMM_WORLD) ==
+        Utilities::MPI::min(alone.last().mesh.n_dofs, MPI_COMM_WORLD));
   const auto [difference, n_matched] = compare_ranks(world, alone);
-  CHECK(n_matched == world.last().n_contact_nodes);
+  CHECK(n_matched == world.last().solve.n_contact_nodes);
   CHECK(difference <= 1e-6 * 27.47252747252748);
 }

@@ -1,4 +1,4 @@
-// Robustness of the scenes (issue 6, items 5-8): lift-off with no contact at
+// Robustness of the scenes: lift-off with no contact at
 // all, a body pulled off the foundation, zero load, extreme meshes on
 // Gamma_C, and parameter files without entries. Every assertion is on a
 // value that is the same on all ranks.
@@ -226,32 +226,36 @@ end
     const CycleResult &r = run.last();
     const Multipliers  m = multipliers(run);
     const Conditions   c = check_conditions(run);
-    table << name << ": " << r.n_dofs << " DoFs, " << r.n_contact_nodes
-          << " contact nodes, " << r.n_active << " active, Uzawa "
-          << r.uzawa_steps << ", Newton " << r.newton_steps << ", CG "
-          << r.linear_iterations << ", force " << r.contact_force << " (load "
-          << r.normal_load << ", rel. diff. "
-          << std::abs(r.contact_force - r.normal_load) / r.normal_load
-          << "), peak " << r.max_pressure << ", min l1 " << c.smallest_l1
+    table << name << ": " << r.mesh.n_dofs << " DoFs, "
+          << r.solve.n_contact_nodes << " contact nodes, " << r.solve.n_active
+          << " active, Uzawa " << r.solve.uzawa_steps << ", Newton "
+          << r.solve.newton_steps << ", CG " << r.solve.cg_iterations
+          << ", force " << r.zone.contact_force << " (load "
+          << r.solve.normal_load << ", rel. diff. "
+          << std::abs(r.zone.contact_force - r.solve.normal_load) /
+               r.solve.normal_load
+          << "), peak " << r.zone.max_pressure << ", min l1 " << c.smallest_l1
           << ", penetration " << c.penetration << ", complementarity "
           << c.complementarity << '\n';
-    INFO(name << ": " << r.n_dofs << " DoFs, Uzawa " << r.uzawa_steps
-              << ", Newton " << r.newton_steps << ", CG " << r.linear_iterations
-              << ", force " << r.contact_force << ", load " << r.normal_load
-              << ", smallest l1 " << c.smallest_l1 << ", penetration "
-              << c.penetration << ", complementarity " << c.complementarity);
-    CHECK(std::isfinite(r.u_l2));
+    INFO(name << ": " << r.mesh.n_dofs << " DoFs, Uzawa " << r.solve.uzawa_steps
+              << ", Newton " << r.solve.newton_steps << ", CG "
+              << r.solve.cg_iterations << ", force " << r.zone.contact_force
+              << ", load " << r.solve.normal_load << ", smallest l1 "
+              << c.smallest_l1 << ", penetration " << c.penetration
+              << ", complementarity " << c.complementarity);
+    CHECK(std::isfinite(r.errors.u_l2));
     CHECK(std::isfinite(max_entry(run.problem->displacement(), run.comm)));
     CHECK(m.finite);
-    CHECK(std::abs(r.normal_load - load) <= 1e-10 * load);
-    CHECK(std::abs(r.contact_force - r.normal_load) <= 1e-8 * r.normal_load);
-    CHECK(r.n_active >= 1);
+    CHECK(std::abs(r.solve.normal_load - load) <= 1e-10 * load);
+    CHECK(std::abs(r.zone.contact_force - r.solve.normal_load) <=
+          1e-8 * r.solve.normal_load);
+    CHECK(r.solve.n_active >= 1);
     CHECK(c.smallest_l1 >= 0.);
     CHECK(c.penetration <= 1e-7);
     CHECK(c.complementarity <= 1e-7);
-    CHECK(r.uzawa_steps <= max_uzawa);
-    CHECK(r.newton_steps <= max_newton);
-    CHECK(r.linear_iterations <= max_cg);
+    CHECK(r.solve.uzawa_steps <= max_uzawa);
+    CHECK(r.solve.newton_steps <= max_newton);
+    CHECK(r.solve.cg_iterations <= max_cg);
   }
 } // namespace
 
@@ -273,19 +277,20 @@ TEST_CASE("Lift-off: a held body pulled away from the foundation touches "
         {
           const CycleResult &a = contact.problem->results()[k];
           const CycleResult &b = free.problem->results()[k];
-          INFO(name << ", cycle " << k << ": " << a.n_dofs << " DoFs, "
-                    << a.n_contact_nodes << " contact nodes, " << a.uzawa_steps
-                    << " Uzawa steps, ||u|| " << a.u_l2 << " against "
-                    << b.u_l2);
-          CHECK(a.n_dofs == b.n_dofs);
-          CHECK(a.n_contact_nodes > 0);
-          CHECK(a.n_active == 0);
-          CHECK(a.contact_force == 0.);
-          CHECK(a.max_pressure == 0.);
-          CHECK(a.normal_load < 0.); // the net load pulls away
-          CHECK(std::isfinite(a.u_l2));
-          CHECK(b.u_l2 > 0.);
-          CHECK(std::abs(a.u_l2 - b.u_l2) <= 1e-8 * b.u_l2);
+          INFO(name << ", cycle " << k << ": " << a.mesh.n_dofs << " DoFs, "
+                    << a.solve.n_contact_nodes << " contact nodes, "
+                    << a.solve.uzawa_steps << " Uzawa steps, ||u|| "
+                    << a.errors.u_l2 << " against " << b.errors.u_l2);
+          CHECK(a.mesh.n_dofs == b.mesh.n_dofs);
+          CHECK(a.solve.n_contact_nodes > 0);
+          CHECK(a.solve.n_active == 0);
+          CHECK(a.zone.contact_force == 0.);
+          CHECK(a.zone.max_pressure == 0.);
+          CHECK(a.solve.normal_load < 0.); // the net load pulls away
+          CHECK(std::isfinite(a.errors.u_l2));
+          CHECK(b.errors.u_l2 > 0.);
+          CHECK(std::abs(a.errors.u_l2 - b.errors.u_l2) <=
+                1e-8 * b.errors.u_l2);
         }
       const Multipliers m = multipliers(contact);
       const double u_max  = max_entry(free.problem->displacement(), free.comm);
@@ -299,10 +304,10 @@ TEST_CASE("Lift-off: a held body pulled away from the foundation touches "
       CHECK(u_max > 0.);
       CHECK(difference <= 1e-8 * u_max);
       if (is_rank_0())
-        std::cout << "Lift-off, " << name << ": " << contact.last().n_dofs
-                  << " DoFs, " << contact.last().uzawa_steps << " Uzawa, "
-                  << contact.last().newton_steps << " Newton, "
-                  << contact.last().linear_iterations
+        std::cout << "Lift-off, " << name << ": " << contact.last().mesh.n_dofs
+                  << " DoFs, " << contact.last().solve.uzawa_steps << " Uzawa, "
+                  << contact.last().solve.newton_steps << " Newton, "
+                  << contact.last().solve.cg_iterations
                   << " CG; max |u_contact - u_free| / max |u_free| = "
                   << difference / u_max << '\n';
     }
@@ -359,26 +364,29 @@ TEST_CASE("Zero load: zero displacement and multipliers in one Uzawa step",
       const double u_max  = max_entry(run->problem->displacement(), run->comm);
       for (const CycleResult &r : run->problem->results())
         {
-          INFO("cycle " << r.cycle << ": " << r.n_dofs << " DoFs, "
-                        << r.uzawa_steps << " Uzawa, " << r.newton_steps
-                        << " Newton, " << r.linear_iterations << " CG, "
-                        << r.friction_steps << " loop-1 steps, ||u|| " << r.u_l2
-                        << ", force " << r.contact_force);
-          CHECK(r.n_contact_nodes > 0);
-          CHECK(r.uzawa_steps == 1);
-          CHECK(r.u_l2 == 0.);
-          CHECK(r.normal_load == 0.);
-          CHECK(r.contact_force == 0.);
-          CHECK(r.tangential_force == 0.);
-          CHECK(r.max_pressure == 0.);
-          CHECK(r.n_active == 0);
+          INFO("cycle " << r.mesh.cycle << ": " << r.mesh.n_dofs << " DoFs, "
+                        << r.solve.uzawa_steps << " Uzawa, "
+                        << r.solve.newton_steps << " Newton, "
+                        << r.solve.cg_iterations << " CG, "
+                        << r.solve.threshold_steps << " threshold steps, ||u|| "
+                        << r.errors.u_l2 << ", force " << r.zone.contact_force);
+          CHECK(r.solve.n_contact_nodes > 0);
+          CHECK(r.solve.uzawa_steps == 1);
+          CHECK(r.errors.u_l2 == 0.);
+          CHECK(r.solve.normal_load == 0.);
+          CHECK(r.zone.contact_force == 0.);
+          CHECK(r.zone.tangential_force == 0.);
+          CHECK(r.zone.max_pressure == 0.);
+          CHECK(r.solve.n_active == 0);
           if (is_rank_0())
-            std::cout << "Zero load, cycle " << r.cycle << ": " << r.n_dofs
-                      << " DoFs, " << r.n_contact_nodes << " contact nodes, "
-                      << r.uzawa_steps << " Uzawa, " << r.newton_steps
-                      << " Newton, " << r.linear_iterations << " CG, "
-                      << r.friction_steps << " loop-1, ||u|| " << r.u_l2
-                      << ", force " << r.contact_force << '\n';
+            std::cout << "Zero load, cycle " << r.mesh.cycle << ": "
+                      << r.mesh.n_dofs << " DoFs, " << r.solve.n_contact_nodes
+                      << " contact nodes, " << r.solve.uzawa_steps << " Uzawa, "
+                      << r.solve.newton_steps << " Newton, "
+                      << r.solve.cg_iterations << " CG, "
+                      << r.solve.threshold_steps << " threshold, ||u|| "
+                      << r.errors.u_l2 << ", force " << r.zone.contact_force
+                      << '\n';
         }
       INFO("max |u| " << u_max << ", max |l1| " << m.largest_l1 << ", max |l2| "
                       << m.largest_l2);

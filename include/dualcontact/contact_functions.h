@@ -1,0 +1,159 @@
+// The pure pieces of the contact solver: functions of numbers and small
+// tensors only, with no mesh, no MPI and no state, so that each can be read
+// against its formula in doc/theory.md and tested on its own.
+#ifndef dualcontact_contact_functions_h
+#define dualcontact_contact_functions_h
+
+#include <deal.II/base/tensor.h>
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /** x^+ = max(x, 0). */
+  inline double
+  positive_part(const double x)
+  {
+    return x > 0. ? x : 0.;
+  }
+
+  /**
+   * |difference| / |reference| for the stopping tests, with 0/0 = 0 and
+   * x/0 = 1 (a change from nothing to something is a full change).
+   */
+  inline double
+  relative_change(const double difference, const double reference)
+  {
+    if (reference > 0.)
+      return difference / reference;
+    return difference > 0. ? 1. : 0.;
+  }
+
+  /**
+   * The projection onto the disc of radius g (an interval [-g, g] in 2D,
+   * where the tangent space has one dimension): the tangential multiplier
+   * update l2 <- proj_g(l2 + r v_t) and the derivative of Phi
+   * (doc/theory.md §2).
+   */
+  template <int n>
+  Tensor<1, n>
+  project_onto_disc(const Tensor<1, n> &y, const double g)
+  {
+    const double norm = y.norm();
+    return norm <= g ? y : (g / norm) * y;
+  }
+
+  /**
+   * psi_g(y) = |y|^2/2 for |y| <= g, g|y| - g^2/2 beyond: the C^1, convex,
+   * Huber-like function whose gradient is project_onto_disc(y, g). The
+   * friction part of the merit function of a Uzawa step is
+   * sum_s m_s/r psi_g(l2_s + r v_t(s)) (doc/theory.md §2, §3.3).
+   */
+  template <int n>
+  double
+  huber(const Tensor<1, n> &y, const double g)
+  {
+    const double norm = y.norm();
+    return norm <= g ? 0.5 * norm * norm : g * norm - 0.5 * g * g;
+  }
+
+  /**
+   * D(y) d, D the derivative of project_onto_disc(., g) at y: the identity
+   * when sticking (|y| < g), (g/|y|)(I - y y^T/|y|^2) when slipping (the
+   * generalised Hessian of psi_g, doc/theory.md §3.3). Symmetric.
+   */
+  template <int n>
+  Tensor<1, n>
+  projection_derivative(const Tensor<1, n> &y,
+                        const double        g,
+                        const Tensor<1, n> &d)
+  {
+    const double norm = y.norm();
+    if (norm < g)
+      return d;
+    if (norm == 0.)
+      return Tensor<1, n>();
+    const Tensor<1, n> y_hat = y / norm;
+    return g / norm * (d - (d * y_hat) * y_hat);
+  }
+
+  /** d . D(y) d: the curvature of psi_g at y along d. */
+  template <int n>
+  double
+  huber_curvature(const Tensor<1, n> &y, const double g, const Tensor<1, n> &d)
+  {
+    return d * projection_derivative(y, g, d);
+  }
+
+  /**
+   * The exact line search of the Newton iteration (doc/theory.md §3.3). Along
+   * a descent direction the merit function phi(a) = M_k(v + a d) is a
+   * convex, C^1, piecewise quadratic; `derivatives(a)` returns (phi'(a),
+   * phi''(a)) (the second from the right). phi'(0) < 0. Returns the
+   * minimiser of phi on a > 0: the root of the increasing, piecewise linear
+   * phi', bracketed by doubling steps of 4, then found by Newton steps on
+   * phi' kept inside the bracket (bisection when they leave it). Ends when
+   * |phi'| <= 1e-12 |phi'(0)| or the bracket is 1e-12 wide (relative); at
+   * most 50 steps, and the bracket stops growing at a = 1e6.
+   */
+  double
+  exact_line_search(
+    const std::function<std::pair<double, double>(double)> &derivatives);
+
+  /**
+   * The half-widths of a 2D contact zone from the pressure at the contact
+   * nodes, (position along the tangent, l1) sorted by position:
+   * - `nodes`: half the distance between the outermost nodes with l1 > 0;
+   * - `extrapolated`: the same with each edge extrapolated: near the edge
+   *   of a smooth contact the pressure vanishes like sqrt(distance), so l1^2
+   *   is linear there; it is extrapolated to zero from the two outermost
+   *   active nodes on each side, staying before the first separated node.
+   *   Where the zone reaches the end of the list there is no such edge and
+   *   the outermost node is kept.
+   * Both are 0 without any active node.
+   */
+  struct ContactZoneWidth
+  {
+    double nodes        = 0.;
+    double extrapolated = 0.;
+  };
+
+  ContactZoneWidth
+  contact_zone_half_width(
+    const std::vector<std::pair<double, double>> &sorted_pressures);
+
+  /**
+   * The net loads on a body that only the contact may hold, for the
+   * equilibrium check before a solve (doc/theory.md §8).
+   */
+  struct LoadBalance
+  {
+    double resultant = 0.; // |net load| (for the round-off scale)
+    // the translation along the foundation normal m is free (only the
+    // contact can stop it), and the net load along m (> 0 pulls the body
+    // off the foundation)
+    bool   normal_free = false;
+    double load_away   = 0.;
+    // each free tangential translation's net load (absolute value)
+    std::vector<double> tangential_loads;
+  };
+
+  /**
+   * Check the necessary conditions of equilibrium: a free normal
+   * translation must be pushed toward the foundation, and a free tangential
+   * load must not exceed `capacity`, what friction can resist at most
+   * (< 0: not known from the loads alone; no check). Throws InputError
+   * (exit status 7) with a message that names the loads otherwise.
+   * `capacity_text` says where the capacity comes from.
+   */
+  void
+  check_equilibrium(const LoadBalance &balance,
+                    const double       capacity,
+                    const std::string &capacity_text);
+} // namespace dualcontact
+
+#endif

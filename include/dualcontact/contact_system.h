@@ -1,0 +1,125 @@
+// What the three loops of the contact solver share: the discrete system they
+// work on, the record of one step of any loop, the totals of a solve, and
+// the observer that is told of every step (the report prints and logs
+// them; a tutorial may print its own).
+#ifndef dualcontact_contact_system_h
+#define dualcontact_contact_system_h
+
+#include <deal.II/base/types.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <string>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * The discrete problem one contact solve works on, all condensed with the
+   * constraints: K = A + chi M, the mass matrix M, the load b, and r, chi
+   * (doc/theory.md §3, §5).
+   */
+  struct ContactSystem
+  {
+    const TrilinosWrappers::SparseMatrix &stiffness; // K = A + chi M
+    const TrilinosWrappers::SparseMatrix &mass;      // M
+    const TrilinosWrappers::MPI::Vector  &load;      // b
+    const AffineConstraints<double>      &homogeneous_constraints;
+    double                                r;   // augmentation [stress/length]
+    double                                chi; // proximal [stress/length^2]
+  };
+
+  /** The three loops, named by what they do (doc/theory.md §3). */
+  enum class Loop
+  {
+    threshold, // loop 1: successive approximations of g
+    uzawa,     // loop 2: the multipliers l1, l2
+    newton     // loop 3: the proximal minimisation in v
+  };
+
+  /** "threshold", "uzawa" or "newton". */
+  std::string
+  to_string(const Loop loop);
+
+  /** One step of one loop: a row of iterations.csv. */
+  struct IterationRecord
+  {
+    Loop                    loop          = Loop::newton;
+    unsigned int            cycle         = 0;
+    unsigned int            uzawa_step    = 0;
+    unsigned int            index         = 0; // Newton or threshold step
+    unsigned int            newton_steps  = 0; // uzawa, threshold rows
+    unsigned int            uzawa_steps   = 0; // threshold rows
+    unsigned int            cg_iterations = 0;
+    unsigned int            amg_setups    = 0;
+    types::global_dof_index n_active      = 0;
+    double gradient        = 0.; // newton: |grad M_k| / |b| before the step
+    double step_length     = 0.; // newton: alpha of the line search
+    double change_l1       = 0.; // uzawa: |l1_new - l1| / |l1_new|
+    double change_v        = 0.; // uzawa: |v_new - v| / |v_new|
+    double violation       = 0.; // uzawa: max (v_n - g0)^+ / |v|_inf
+    double complementarity = 0.; // uzawa: max l1 |g0 - v_n| / (max l1 |v|_inf)
+    double change_l2       = 0.; // uzawa: |l2_new - l2| / |l2_new|
+    double change_g        = 0.; // uzawa (merged) and threshold rows:
+                                 // |g_new - g| / |g_new|
+    types::global_dof_index n_stick = 0;  // in contact and sticking
+    types::global_dof_index n_slip  = 0;  // in contact and slipping
+    double                  time    = 0.; // wall time of the step [s]
+  };
+
+  /** Totals of a contact solve (all three loops). */
+  struct ContactStatistics
+  {
+    unsigned int            threshold_steps = 0; // loop 1
+    unsigned int            uzawa_steps     = 0;
+    unsigned int            newton_steps    = 0;
+    unsigned int            cg_iterations   = 0;
+    unsigned int            amg_setups      = 0;
+    types::global_dof_index n_active        = 0;
+    types::global_dof_index n_stick         = 0;
+    types::global_dof_index n_slip          = 0;
+    // The last relative change of l1 understates its error: with the
+    // observed contraction rate rho = d_k / d_{k-1} the remaining error is
+    // about d_k rho / (1 - rho) (doc/theory.md §6).
+    double rate               = 0.;
+    double estimated_l1_error = 0.;
+    double change_g           = 0.; // last change of g
+
+    /** Add the counts of `part`, a later solve; keep its final state. */
+    void
+    add(const ContactStatistics &part);
+  };
+
+  /**
+   * Told of every step of every loop, and of the few things a loop has to
+   * say (which g^0 the threshold iteration starts from, a round-off floor
+   * the Newton iteration accepted). Every method does nothing by default.
+   */
+  class IterationObserver
+  {
+  public:
+    virtual ~IterationObserver() = default;
+
+    virtual void
+    newton_step(const IterationRecord &)
+    {}
+
+    /** `friction`: the step has tangential terms; `merged`: g was updated. */
+    virtual void
+    uzawa_step(const IterationRecord &, const bool, const bool)
+    {}
+
+    virtual void
+    threshold_step(const IterationRecord &)
+    {}
+
+    virtual void
+    note(const std::string &)
+    {}
+  };
+} // namespace dualcontact
+
+#endif

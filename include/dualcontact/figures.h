@@ -1,0 +1,112 @@
+// The figures each phase of a refinement cycle returns, and the record of a
+// whole cycle that the report turns into screen output, tables and CSV.
+#ifndef dualcontact_figures_h
+#define dualcontact_figures_h
+
+#include <deal.II/base/types.h>
+
+#include <dualcontact/contact_system.h>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /** setup_system(): the mesh of this cycle. */
+  struct MeshFigures
+  {
+    unsigned int             cycle   = 0;
+    types::global_cell_index n_cells = 0;
+    types::global_dof_index  n_dofs  = 0;
+  };
+
+  /**
+   * transfer_fields(): what nested iteration carried from the previous
+   * mesh. The carried multipliers before their projection onto the
+   * admissible set: the smallest l1 and the largest |l2| - g, relative to
+   * the largest multiplier and the largest g (doc/theory.md §7).
+   */
+  struct TransferFigures
+  {
+    bool   warm_start         = false;
+    double carried_min_l1     = 0.;
+    double carried_max_excess = 0.;
+  };
+
+  /**
+   * solve(): the loops' totals (for linear elasticity alone: the CG
+   * iterations), and the constants of the contact problem.
+   */
+  struct SolveFigures : ContactStatistics
+  {
+    types::global_dof_index n_contact_nodes   = 0;
+    types::global_dof_index n_hanging_contact = 0;  // on Gamma_C, all ranks
+    double                  r                 = 0.; // augmentation used
+    double                  chi               = 0.; // proximal weight used
+    // the net load toward the foundation (includes the lifting of
+    // prescribed displacements)
+    double normal_load = 0.;
+    // Solver/Time a reference linear solve: AMG set-up + CG of one solve
+    double       time_reference       = 0.;
+    unsigned int reference_iterations = 0;
+  };
+
+  /** measure_contact_zone(): the contact zone at convergence. */
+  struct ContactZoneFigures
+  {
+    double contact_force    = 0.; // sum_s m_s l1_s
+    double tangential_force = 0.; // |sum_s m_s l2_s|
+    double max_pressure     = 0.; // max_s l1_s
+    double half_width       = 0.; // 2D: half the extent of the active nodes
+    double edge_half_width  = 0.; // 2D: the same, edges extrapolated
+    double pressure_error   = 0.; // relative L2 on Gamma_C (exact known)
+    // relative errors against <Exact solution/Contact half-width> and
+    // <Peak pressure> (0 where not known)
+    double half_width_error    = 0.;
+    double peak_pressure_error = 0.;
+  };
+
+  /** compare_with_cold_start(): the same mesh solved from zero. */
+  struct ColdStartFigures
+  {
+    unsigned int uzawa_steps     = 0;
+    unsigned int newton_steps    = 0;
+    unsigned int threshold_steps = 0;
+    double       time            = 0.; // [s], apart from the solve's
+    double       difference_v    = 0.; // |v - v_cold|_a / |v_cold|_a
+    double       difference_l1   = 0.; // the same for l1 (weighted)
+  };
+
+  /** postprocess(): norms of the displacement and of its error. */
+  struct ErrorNorms
+  {
+    double u_l2    = 0.; // ||u||_L2
+    double l2      = 0.; // ||u - u_exact||_L2 (exact known)
+    double h1_semi = 0.; // |u - u_exact|_H1
+  };
+
+  /** Wall times of the phases of one cycle [s], from the TimerOutput. */
+  struct PhaseTimes
+  {
+    double refine   = 0.; // marking, refinement, transfer (to this mesh)
+    double setup    = 0.;
+    double assembly = 0.;
+    double solve    = 0.;
+    double output   = 0.;
+    double total    = 0.; // all phases of all cycles up to here
+  };
+
+  /** One refinement cycle: one row of the cycle table. */
+  struct CycleResult
+  {
+    MeshFigures        mesh;
+    TransferFigures    transfer;
+    SolveFigures       solve;
+    ContactZoneFigures zone;
+    ColdStartFigures   cold;
+    ErrorNorms         errors;
+    PhaseTimes         time;
+    double             memory_mb = 0.; // peak resident memory, all ranks
+  };
+} // namespace dualcontact
+
+#endif

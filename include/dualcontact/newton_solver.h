@@ -1,0 +1,136 @@
+// The Newton iteration (loop 3, doc/theory.md §3.3): one proximal step of the
+// Uzawa iteration, i.e. the minimisation of the piecewise-quadratic, C^1,
+// strongly convex functional M_k(v) by a semi-smooth Newton method with an
+// exact line search. Each Newton step is one CG solve with algebraic
+// multigrid; the AMG hierarchy is reused while the contact statuses hardly
+// change.
+#ifndef dualcontact_newton_solver_h
+#define dualcontact_newton_solver_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dualcontact/contact_set.h>
+#include <dualcontact/contact_system.h>
+#include <dualcontact/elasticity.h>
+#include <dualcontact/parameters.h>
+
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /** What one minimisation took. */
+  struct NewtonStatistics
+  {
+    unsigned int newton_steps  = 0;
+    unsigned int cg_iterations = 0;
+    unsigned int amg_setups    = 0;
+  };
+
+  template <int dim>
+  class NewtonSolver
+  {
+  public:
+    NewtonSolver(const SolverParameters &parameters,
+                 ElasticSolver<dim>     &linear_solver);
+
+    /**
+     * Forget the AMG hierarchy and the round-off floor: the next
+     * minimisation works on a new system.
+     */
+    void
+    reset();
+
+    /**
+     * Minimise M_k(v) = 1/2 a(v,v) - L(v) + (chi/2)|v - v^k|_M^2
+     *   + sum_s m_s/(2r) (((l1_s + r(v_n - g0))^+)^2 - l1_s^2)
+     *   + sum_s m_s/r psi_g(l2_s + r v_t)
+     * over v, from v, with v^k = `v_previous` and the multipliers of
+     * `contact`. Stops when |grad M_k| <= max(final_tolerance |b|,
+     * min(envelope |b|, inner factor |grad_0|)), grad_0 the gradient at the
+     * start, or at the round-off floor of the matrix. Every step is reported
+     * to `observer` (may be nullptr). Throws if it does not converge.
+     */
+    NewtonStatistics
+    minimise(const ContactSystem                 &system,
+             const ContactSet<dim>               &contact,
+             const TrilinosWrappers::MPI::Vector &v_previous,
+             TrilinosWrappers::MPI::Vector       &v,
+             const double                         envelope,
+             const double                         final_tolerance,
+             const unsigned int                   uzawa_step,
+             IterationObserver                   *observer = nullptr);
+
+    /**
+     * For benchmarks: the wall time [s] of one linear solve on the current
+     * mesh: AMG set-up plus CG (linear tolerance) on the Newton matrix at
+     * the current contact statuses, with right-hand side b. `iterations`
+     * gets the CG count.
+     */
+    double
+    time_reference_solve(const ContactSystem                 &system,
+                         const ContactSet<dim>               &contact,
+                         const TrilinosWrappers::MPI::Vector &v,
+                         unsigned int                        &iterations);
+
+  private:
+    /**
+     * grad M_k(v) = K v - b - chi M v^k + sum_s m_s ((z_s)^+ n + T
+     * proj_g(y_s)), condensed (constrained rows zero). `smooth` gets the
+     * first part alone (the line search needs it).
+     */
+    void
+    compute_gradient(const ContactSet<dim>               &contact,
+                     const TrilinosWrappers::MPI::Vector &v,
+                     TrilinosWrappers::MPI::Vector       &smooth,
+                     TrilinosWrappers::MPI::Vector       &gradient) const;
+
+    /**
+     * H = K + sum_{z_s >= 0} m_s r n n^T + sum_s m_s r T D(y_s) T^T,
+     * condensed, with T the tangent basis and D the derivative of the
+     * projection onto the disc of radius g (I when sticking).
+     */
+    void
+    assemble_newton_matrix(const ContactSet<dim> &contact);
+
+    /**
+     * Build the AMG hierarchy for the Newton matrix only when the node
+     * statuses moved enough since the last set-up, or CG slowed down.
+     * Returns whether it was built.
+     */
+    bool
+    update_preconditioner(const std::vector<unsigned char> &status,
+                          const types::global_dof_index     n_active);
+
+    /** The step length along `direction` that minimises M_k. */
+    double
+    line_search(const ContactSet<dim>               &contact,
+                const TrilinosWrappers::MPI::Vector &smooth_gradient,
+                const TrilinosWrappers::MPI::Vector &direction);
+
+    const SolverParameters &parameters;
+    ElasticSolver<dim>     &linear_solver;
+
+    // the system of the current minimisation: set by minimise()
+    const ContactSystem            *system = nullptr;
+    TrilinosWrappers::MPI::Vector   rhs; // b + chi M v^k
+    std::vector<double>             z;   // l1 + r (v_n - g0) per node
+    std::vector<Tensor<1, dim - 1>> y;   // l2 + r v_t per node
+
+    // the Newton matrix, and the statuses it had when its AMG
+    // preconditioner was last built
+    TrilinosWrappers::SparseMatrix newton_matrix;
+    std::vector<unsigned char>     amg_status;
+    bool                           amg_valid                 = false;
+    unsigned int                   cg_iterations_after_setup = 0;
+    unsigned int                   last_cg_iterations        = 0;
+    // the round-off floor of the gradient found since reset(), over |b|,
+    // and whether it was reported
+    double roundoff_floor    = 0.;
+    bool   roundoff_reported = false;
+  };
+} // namespace dualcontact
+
+#endif

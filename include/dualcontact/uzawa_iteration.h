@@ -1,0 +1,92 @@
+// The Uzawa iteration (loop 2, doc/theory.md §3.2) on the modified Lagrangian
+// with proximal regularisation. One step k:
+//   1. the proximal step  v^{k+1} = argmin_v M_k(v)   (the Newton iteration)
+//   2. the multiplier update
+//        l1^{k+1} = (l1^k + r (v_n^{k+1} - g0))^+,
+//        l2^{k+1} = proj_g(l2^k + r v_t^{k+1}).
+// Both are public, so that a program can write the loop itself; solve()
+// is that loop with the stopping test of doc/theory.md §6.
+#ifndef dualcontact_uzawa_iteration_h
+#define dualcontact_uzawa_iteration_h
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dualcontact/contact_set.h>
+#include <dualcontact/contact_system.h>
+#include <dualcontact/newton_solver.h>
+#include <dualcontact/parameters.h>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  class UzawaIteration
+  {
+  public:
+    UzawaIteration(const SolverParameters &parameters,
+                   NewtonSolver<dim>      &newton);
+
+    /**
+     * The proximal step k (k = 1, 2, ...): minimise M_k from v, with
+     * v^k = `v_previous` and the multipliers of `contact`, by the Newton
+     * iteration. Its tolerance shrinks geometrically with k, an envelope
+     * that keeps the errors summable, as the convergence theorem needs; it
+     * never goes below the final tolerance (the Newton tolerance factor
+     * times the Uzawa tolerance).
+     */
+    NewtonStatistics
+    proximal_step(const ContactSystem                 &system,
+                  const ContactSet<dim>               &contact,
+                  const TrilinosWrappers::MPI::Vector &v_previous,
+                  TrilinosWrappers::MPI::Vector       &v,
+                  const unsigned int                   k,
+                  IterationObserver                   *observer = nullptr);
+
+    /**
+     * The multiplier update after the proximal step from `v_previous` to
+     * `v`, and the measures of convergence, reduced over the ranks: the
+     * relative changes of l1, l2 and v, the relative violation and
+     * complementarity, the active, stick and slip counts. With
+     * `update_threshold` (the merged threshold iteration) also g <- the
+     * law's threshold at the new pressure, before l2 is projected.
+     */
+    IterationRecord
+    update_multipliers(const ContactSystem                 &system,
+                       ContactSet<dim>                     &contact,
+                       const TrilinosWrappers::MPI::Vector &v_previous,
+                       const TrilinosWrappers::MPI::Vector &v,
+                       const bool update_threshold = false) const;
+
+    /**
+     * The stopping test: the relative changes of l1, v (and l2 with
+     * friction) and the violation at most the Uzawa tolerance, and the
+     * change of g at most `threshold_tolerance` if g was updated.
+     */
+    bool
+    converged(const IterationRecord &record,
+              const bool             friction,
+              const bool             update_threshold    = false,
+              const double           threshold_tolerance = 0.) const;
+
+    /**
+     * The whole iteration from v (owned entries, satisfying the
+     * constraints) and the multipliers in `contact`, until converged().
+     * Every Newton and Uzawa step is reported to `observer`. Throws if it
+     * does not converge in <Solver/Maximum Uzawa steps>.
+     */
+    ContactStatistics
+    solve(const ContactSystem           &system,
+          ContactSet<dim>               &contact,
+          TrilinosWrappers::MPI::Vector &v,
+          IterationObserver             *observer            = nullptr,
+          const bool                     update_threshold    = false,
+          const double                   threshold_tolerance = 0.);
+
+  private:
+    const SolverParameters &parameters;
+    NewtonSolver<dim>      &newton;
+  };
+} // namespace dualcontact
+
+#endif

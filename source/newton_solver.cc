@@ -1,0 +1,413 @@
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <dualcontact/contact_functions.h>
+#include <dualcontact/input_error.h>
+#include <dualcontact/newton_solver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dualcontact
+{
+  namespace
+  {
+    // Status of a contact node as the generalised Hessian sees it:
+    // 0 separated, 1 in contact and sticking (or frictionless), 2 slipping.
+    template <int n>
+    unsigned char
+    node_status(const double        z,
+                const bool          friction,
+                const Tensor<1, n> &y,
+                const double        g)
+    {
+      if (z < 0.)
+        return 0;
+      return (!friction || y.norm() < g) ? 1 : 2;
+    }
+  } // namespace
+
+  template <int dim>
+  NewtonSolver<dim>::NewtonSolver(const SolverParameters &parameters,
+                                  ElasticSolver<dim>     &linear_solver)
+      : parameters(parameters)
+      , linear_solver(linear_solver)
+  {}
+
+  template <int dim>
+  void
+  NewtonSolver<dim>::reset()
+  {
+    amg_valid         = false;
+    roundoff_floor    = 0.;
+    roundoff_reported = false;
+  }
+
+  template <int dim>
+  void
+  NewtonSolver<dim>::compute_gradient(
+    const ContactSet<dim>               &contact,
+    const TrilinosWrappers::MPI::Vector &v,
+    TrilinosWrappers::MPI::Vector       &smooth,
+    TrilinosWrappers::MPI::Vector       &gradient) const
+  {
+    const auto &constraints = system->homogeneous_constraints;
+    system->stiffness.vmult(smooth, v);
+    smooth -= rhs;
+    constraints.set_zero(smooth);
+    gradient = smooth;
+    // contact terms m_s ((z_s)^+ n + T proj_g(y_s))
+    Vector<double>                       local_vector(dim);
+    std::vector<types::global_dof_index> local_dofs(dim);
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      {
+        const double   m     = contact.nodes[s].weight;
+        Tensor<1, dim> force = (m * positive_part(z[s])) * contact.normal;
+        if (contact.friction)
+          {
+            const Tensor<1, dim - 1> q =
+              project_onto_disc(y[s], contact.threshold[s]);
+            for (unsigned int k = 0; k < dim - 1; ++k)
+              force += (m * q[k]) * contact.tangents[k];
+          }
+        if (force.norm() == 0.)
+          continue;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            local_vector(c) = force[c];
+            local_dofs[c]   = contact.nodes[s].dofs[c];
+          }
+        constraints.distribute_local_to_global(local_vector,
+                                               local_dofs,
+                                               gradient);
+      }
+    gradient.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  NewtonSolver<dim>::assemble_newton_matrix(const ContactSet<dim> &contact)
+  {
+    const Tensor<1, dim>                &n = contact.normal;
+    FullMatrix<double>                   local_matrix(dim, dim);
+    std::vector<types::global_dof_index> local_dofs(dim);
+    newton_matrix.copy_from(system->stiffness);
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      {
+        const double m_r = contact.nodes[s].weight * system->r;
+        local_matrix     = 0;
+        // normal part, where z >= 0 (at z = 0 the generalised derivative may
+        // take either branch; the active one spares a free fall)
+        if (z[s] >= 0.)
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              local_matrix(a, b) += m_r * n[a] * n[b];
+        // tangential part T D(y) T^T, column by column: e_b in the tangent
+        // basis, and D(y) applied to it
+        if (contact.friction)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              Tensor<1, dim - 1> eb;
+              for (unsigned int k = 0; k < dim - 1; ++k)
+                eb[k] = contact.tangents[k][b];
+              const Tensor<1, dim - 1> Deb =
+                projection_derivative(y[s], contact.threshold[s], eb);
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int k = 0; k < dim - 1; ++k)
+                  local_matrix(a, b) += m_r * contact.tangents[k][a] * Deb[k];
+            }
+        if (local_matrix.frobenius_norm() == 0.)
+          continue;
+        for (unsigned int a = 0; a < dim; ++a)
+          local_dofs[a] = contact.nodes[s].dofs[a];
+        system->homogeneous_constraints.distribute_local_to_global(
+          local_matrix, local_dofs, newton_matrix);
+      }
+    newton_matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  bool
+  NewtonSolver<dim>::update_preconditioner(
+    const std::vector<unsigned char> &status,
+    const types::global_dof_index     n_active)
+  {
+    // Rebuild the AMG only when the node statuses moved enough, measured
+    // against the size of the active set (the part of H that changes) ...
+    const MPI_Comm          comm      = rhs.get_mpi_communicator();
+    types::global_dof_index n_changed = 0, n_active_built = 0;
+    if (amg_valid)
+      for (unsigned int s = 0; s < status.size(); ++s)
+        {
+          n_changed += (status[s] != amg_status[s]);
+          n_active_built += (amg_status[s] > 0);
+        }
+    n_changed      = Utilities::MPI::sum(n_changed, comm);
+    n_active_built = Utilities::MPI::sum(n_active_built, comm);
+    // ... or when the last CG solve needed clearly more iterations than the
+    // first one after the set-up (a set-up costs about 20 of them).
+    const bool rebuild =
+      !amg_valid || parameters.amg_rebuild_fraction == 0. ||
+      n_changed >
+        parameters.amg_rebuild_fraction * std::max(n_active_built, n_active) ||
+      last_cg_iterations > 1.5 * cg_iterations_after_setup + 10;
+    if (rebuild)
+      {
+        linear_solver.initialize(newton_matrix);
+        amg_status = status;
+        amg_valid  = true;
+      }
+    return rebuild;
+  }
+
+  template <int dim>
+  double
+  NewtonSolver<dim>::line_search(
+    const ContactSet<dim>               &contact,
+    const TrilinosWrappers::MPI::Vector &smooth_gradient,
+    const TrilinosWrappers::MPI::Vector &direction)
+  {
+    // The smooth part of M_k is exactly quadratic and each contact term a
+    // 1D piecewise quadratic, so phi(a) = M_k(v + a d) is a convex piecewise
+    // quadratic with
+    //   phi'(a) = q1 + a q2 + sum_s m_s ((z_s + a r dn_s)^+ dn_s
+    //                                   + proj_g(y_s + a r dt_s).dt_s),
+    // and its minimiser is found exactly (doc/theory.md §3.3: the line
+    // search makes Newton globally convergent; an exact one also lets a step
+    // that meets many new contact nodes go as far as it should).
+    const MPI_Comm                  comm = rhs.get_mpi_communicator();
+    const double                    r    = system->r;
+    const unsigned int              n    = contact.n_local_nodes();
+    std::vector<double>             dn(n);
+    std::vector<Tensor<1, dim - 1>> dt(n);
+    TrilinosWrappers::MPI::Vector   free_direction(direction), tmp(direction);
+    system->homogeneous_constraints.set_zero(free_direction);
+    system->stiffness.vmult(tmp, free_direction);
+    const double q2 = free_direction * tmp;
+    const double q1 = smooth_gradient * direction;
+    for (unsigned int s = 0; s < n; ++s)
+      {
+        dn[s] = contact.normal_displacement(direction, s);
+        if (contact.friction)
+          dt[s] = contact.tangential_displacement(direction, s);
+      }
+    // phi'(a) and phi''(a) (the latter from the right), summed over ranks
+    const auto derivatives = [&](const double alpha) {
+      double local[2] = {0., 0.};
+      for (unsigned int s = 0; s < n; ++s)
+        {
+          const double m  = contact.nodes[s].weight;
+          const double zs = z[s] + alpha * r * dn[s];
+          if (zs > 0. || (zs == 0. && dn[s] > 0.))
+            {
+              local[0] += m * zs * dn[s];
+              local[1] += m * r * dn[s] * dn[s];
+            }
+          if (contact.friction)
+            {
+              const Tensor<1, dim - 1> ys = y[s] + alpha * r * dt[s];
+              const double             g  = contact.threshold[s];
+              local[0] += m * (project_onto_disc(ys, g) * dt[s]);
+              local[1] += m * r * huber_curvature(ys, g, dt[s]);
+            }
+        }
+      double global[2];
+      Utilities::MPI::sum(ArrayView<const double>(local, 2),
+                          comm,
+                          ArrayView<double>(global, 2));
+      return std::make_pair(q1 + alpha * q2 + global[0], q2 + global[1]);
+    };
+    // phi(1) - phi(0), for the sufficient-decrease (Armijo) test of the
+    // full step
+    const auto merit_change = [&]() {
+      double local = 0;
+      for (unsigned int s = 0; s < n; ++s)
+        {
+          const double m = contact.nodes[s].weight;
+          local += m / (2. * r) *
+                   (std::pow(positive_part(z[s] + r * dn[s]), 2) -
+                    std::pow(positive_part(z[s]), 2));
+          if (contact.friction)
+            local += m / r *
+                     (huber(Tensor<1, dim - 1>(y[s] + r * dt[s]),
+                            contact.threshold[s]) -
+                      huber(y[s], contact.threshold[s]));
+        }
+      return q1 + 0.5 * q2 + Utilities::MPI::sum(local, comm);
+    };
+    // The full step when it decreases M_k enough, else the exact minimiser.
+    if (!parameters.line_search ||
+        merit_change() <= 1e-4 * derivatives(0.).first)
+      return 1.;
+    return exact_line_search(derivatives);
+  }
+
+  template <int dim>
+  NewtonStatistics
+  NewtonSolver<dim>::minimise(const ContactSystem                 &system_,
+                              const ContactSet<dim>               &contact,
+                              const TrilinosWrappers::MPI::Vector &v_previous,
+                              TrilinosWrappers::MPI::Vector       &v,
+                              const double                         envelope,
+                              const double       final_tolerance,
+                              const unsigned int uzawa_step,
+                              IterationObserver *observer)
+  {
+    system                   = &system_;
+    const MPI_Comm comm      = v.get_mpi_communicator();
+    const unsigned n_nodes   = contact.n_local_nodes();
+    const double   load      = system->load.l2_norm();
+    const double   reference = load > 0. ? load : 1.;
+
+    // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k.
+    rhs.reinit(system->load);
+    TrilinosWrappers::MPI::Vector tmp(system->load);
+    system->mass.vmult(tmp, v_previous);
+    rhs = system->load;
+    rhs.add(system->chi, tmp);
+
+    TrilinosWrappers::MPI::Vector smooth_gradient(rhs), gradient(rhs),
+      direction(rhs), newton_rhs(rhs);
+    std::vector<unsigned char> status(n_nodes), previous_status(n_nodes);
+
+    NewtonStatistics statistics;
+    double           target = 0.; // absolute gradient tolerance of this call
+    // for the round-off test: the previous step length and gradient, and
+    // how many steps in a row have stalled
+    double       previous_alpha = 0., previous_gradient = 0.;
+    unsigned int stalled = 0;
+    for (unsigned int j = 0;; ++j)
+      {
+        Timer timer(comm, true);
+        contact.augmented_state(v, system->r, z, y);
+        compute_gradient(contact, v, smooth_gradient, gradient);
+
+        IterationRecord record;
+        record.loop       = Loop::newton;
+        record.uzawa_step = uzawa_step;
+        record.index      = j;
+        record.gradient   = gradient.l2_norm() / reference;
+
+        types::global_dof_index n_active = 0;
+        for (unsigned int s = 0; s < n_nodes; ++s)
+          {
+            status[s] =
+              node_status(z[s], contact.friction, y[s], contact.threshold[s]);
+            n_active += (status[s] > 0);
+          }
+        record.n_active = Utilities::MPI::sum(n_active, comm);
+
+        // Stop when the gradient is below the envelope and has fallen by the
+        // inner tolerance factor within this Uzawa step (each step is then
+        // solved as accurately as the Uzawa iteration can use, and no more),
+        // or when it is below the final tolerance (doc/theory.md §6).
+        const double gradient_norm = gradient.l2_norm();
+        if (j == 0)
+          target = std::max(
+            {final_tolerance * reference,
+             std::min(envelope * reference,
+                      parameters.inner_tolerance_factor * gradient_norm),
+             1.5 * roundoff_floor * reference});
+        // With the node statuses fixed M_k is quadratic, and a full Newton
+        // step ends at its minimiser up to the CG tolerance. If full steps
+        // at unchanged statuses stop reducing the gradient, it has reached
+        // the round-off floor of K (which rises with lambda/mu, i.e. as nu
+        // -> 1/2): accept that floor when it is within 10^3 of the target.
+        bool unchanged = j > 0;
+        for (unsigned int s = 0; unchanged && s < n_nodes; ++s)
+          unchanged = status[s] == previous_status[s];
+        unchanged           = Utilities::MPI::min(unchanged ? 1 : 0, comm) == 1;
+        stalled             = (unchanged && previous_alpha == 1. &&
+                   gradient_norm > 0.5 * previous_gradient) ?
+                                stalled + 1 :
+                                0;
+        const bool at_floor = stalled >= 3 && gradient_norm <= 1e3 * target;
+        if (at_floor)
+          roundoff_floor = std::max(roundoff_floor, gradient_norm / reference);
+        if (at_floor && !roundoff_reported && observer != nullptr)
+          observer->note(
+            "Newton: the gradient stagnates at " +
+            format_number(gradient_norm / reference) +
+            " |b| (round-off of this matrix) above the target " +
+            format_number(target / reference) +
+            " |b|; accepted, and the later Uzawa steps of this solve stop "
+            "there at once");
+        roundoff_reported |= at_floor;
+        if (gradient_norm <= target || at_floor)
+          {
+            timer.stop();
+            record.time = timer.wall_time();
+            if (observer != nullptr)
+              observer->newton_step(record);
+            return statistics;
+          }
+        previous_status   = status;
+        previous_gradient = gradient_norm;
+        AssertThrow(j < parameters.max_newton_steps,
+                    ExcMessage(
+                      "The Newton iteration did not converge in " +
+                      std::to_string(parameters.max_newton_steps) +
+                      " steps in Uzawa step " + std::to_string(uzawa_step) +
+                      " (relative gradient " + format_number(record.gradient) +
+                      ", wanted " + format_number(target / reference) +
+                      "). Raise <Solver/Maximum Newton steps>."));
+
+        // The Newton direction: H d = -grad, by CG with AMG, solved only as
+        // accurately as the target needs (inexact Newton).
+        assemble_newton_matrix(contact);
+        record.amg_setups = update_preconditioner(status, record.n_active);
+        const double forcing =
+          std::min(0.1, std::max(1e-12, 0.5 * target / gradient_norm));
+        newton_rhs.equ(-1., gradient);
+        direction = 0;
+        record.cg_iterations =
+          linear_solver.solve(newton_matrix, direction, newton_rhs, forcing);
+        last_cg_iterations = record.cg_iterations;
+        if (record.amg_setups > 0)
+          cg_iterations_after_setup = record.cg_iterations;
+        system->homogeneous_constraints.distribute(direction);
+
+        const double alpha = line_search(contact, smooth_gradient, direction);
+        v.add(alpha, direction);
+        record.step_length = alpha;
+        previous_alpha     = alpha;
+
+        timer.stop();
+        record.time = timer.wall_time();
+        if (observer != nullptr)
+          observer->newton_step(record);
+        statistics.newton_steps += 1;
+        statistics.cg_iterations += record.cg_iterations;
+        statistics.amg_setups += record.amg_setups;
+      }
+  }
+
+  template <int dim>
+  double
+  NewtonSolver<dim>::time_reference_solve(
+    const ContactSystem                 &system_,
+    const ContactSet<dim>               &contact,
+    const TrilinosWrappers::MPI::Vector &v,
+    unsigned int                        &iterations)
+  {
+    system = &system_;
+    contact.augmented_state(v, system->r, z, y);
+    assemble_newton_matrix(contact);
+
+    Timer timer(v.get_mpi_communicator(), true);
+    linear_solver.initialize(newton_matrix);
+    TrilinosWrappers::MPI::Vector x(system->load);
+    x          = 0;
+    iterations = linear_solver.solve(newton_matrix, x, system->load);
+    timer.stop();
+    amg_valid = false; // the preconditioner now belongs to another matrix
+    return timer.wall_time();
+  }
+
+  template class NewtonSolver<2>;
+  template class NewtonSolver<3>;
+} // namespace dualcontact
