@@ -250,6 +250,12 @@ namespace dualcontact
               std::pow(scene.characteristic_length(), 2);
         system_matrix.add(chi, mass_matrix);
       }
+    // the rigid-body modes of this mesh, for the algebraic multigrid
+    elastic_solver.set_near_null_space(mapping,
+                                       dof_handler,
+                                       system_matrix,
+                                       scene.center(),
+                                       scene.characteristic_length());
   }
 
   template <int dim>
@@ -257,11 +263,6 @@ namespace dualcontact
   ContactProblem<dim>::solve()
   {
     TimerOutput::Scope t(computing_timer, "solve");
-    elastic_solver.set_near_null_space(mapping,
-                                       dof_handler,
-                                       system_matrix,
-                                       scene.center(),
-                                       scene.characteristic_length());
     indicator_valid = false; // a new solution
     TrilinosWrappers::MPI::Vector v(locally_owned_dofs, mpi_communicator);
     const SolveFigures            figures =

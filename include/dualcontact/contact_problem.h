@@ -77,7 +77,10 @@ namespace dualcontact
     TransferFigures
     transfer_fields();
 
-    /** K = A + chi M (with contact), M, and the load b. */
+    /**
+     * K = A + chi M (with contact), M, and the load b; the rigid-body
+     * modes for the AMG of every linear solve on this mesh.
+     */
     void
     assemble_system();
 
