@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Hertz benchmark (issue 3): cost of a contact solve against one linear
+# The Hertz benchmark: cost of a contact solve against one linear
 # elasticity solve on the same mesh, on meshes up to >= 1e6 DoFs.
 #
 #   bash doc/benchmark_hertz.sh [ranks] [cycles]
@@ -15,8 +15,13 @@
 #   Refinement/Number of cycles = <cycles>, Output/Write vtu = false,
 #   Output/Directory = a temporary folder,
 #   Solver/Time a reference linear solve = true.
-# Writes doc/benchmark_hertz.log (the screen output) and
-# doc/benchmark_hertz.md (the table built from cycles.csv).
+# Writes doc/benchmark_<tag>.log (the screen output) and
+# doc/benchmark_<tag>.md (the table built from cycles.csv). The page
+# describes the scene as it was run (friction law, F, threshold iteration,
+# nested iteration or cold starts), read from the parameter file after the
+# overrides and EXTRA_PRM, with the program's defaults (--print-parameters)
+# for the entries it leaves out. Paths written into doc/ are relative to the
+# repository root; the temporary folder appears as <temporary folder>.
 # The program is $DUALCONTACT if set, else <repository>/build/dualcontact.
 # KEEP_OUTPUT=1 keeps the temporary output folder (cycles.csv, iterations.csv
 # with every Newton step: CG iterations, AMG set-ups, step length, time).
@@ -30,17 +35,35 @@ cycles="${2:-5}"
 case "$np" in ''|*[!0-9]*|0) echo "benchmark_hertz: ranks must be a positive integer, not '$np'" >&2; exit 2 ;; esac
 case "$cycles" in ''|*[!0-9]*|0) echo "benchmark_hertz: cycles must be a positive integer, not '$cycles'" >&2; exit 2 ;; esac
 
-doc="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-repo="$(cd "$doc/.." && pwd)"
+doc="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
+repo="$(cd "$doc/.." && pwd -P)"
 bin="${DUALCONTACT:-$repo/build/dualcontact}"
 if [ ! -x "$bin" ]; then
   echo "benchmark_hertz: no program at '$bin'; build it (bash contrib/build.sh) or set DUALCONTACT" >&2
   exit 2
 fi
 
+# A path as seen from the repository root (what the pages in doc/ show:
+# never an absolute path of this machine).
+repo_path() {
+  local p
+  p="$(realpath -m -- "$1" 2>/dev/null || printf '%s' "$1")"
+  case "$p" in
+    "$repo") printf '.' ;;
+    "$repo"/*) printf '%s' "${p#"$repo"/}" ;;
+    /*) realpath -m --relative-to="$repo" -- "$p" 2>/dev/null || basename -- "$p" ;;
+    *) printf '%s' "$p" ;;
+  esac
+}
+bin_shown="$(repo_path "$bin")"
+
 scene="${SCENE:-hertz}"              # prm/<scene>.prm
 tag="${TAG:-$scene}"                  # names doc/benchmark_<tag>.{log,md}
-target="${TARGET:-10}"                # the ratio the issue asks for
+target="${TARGET:-10}"                # the ratio to judge against
+if [ ! -f "$repo/prm/$scene.prm" ]; then
+  echo "benchmark_hertz: no parameter file 'prm/$scene.prm' (SCENE=$scene)" >&2
+  exit 2
+fi
 log="$doc/benchmark_${tag}.log"
 md="$doc/benchmark_${tag}.md"
 
@@ -81,7 +104,17 @@ fi
 export OMPI_ALLOW_RUN_AS_ROOT=1
 export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-cmd="mpirun ${MPIRUN_FLAGS:+$MPIRUN_FLAGS }-np $np $bin <prm/$scene.prm + the overrides above>"
+cmd="mpirun ${MPIRUN_FLAGS:+$MPIRUN_FLAGS }-np $np $bin_shown <prm/$scene.prm + the overrides above>"
+# the command line, with the settings that were given
+invocation=""
+for v in SCENE TAG TARGET MPIRUN_FLAGS; do
+  if [ -n "${!v:-}" ]; then
+    case "${!v}" in *[[:space:]]*) invocation="$invocation$v=\"${!v}\" " ;; *) invocation="$invocation$v=${!v} " ;; esac
+  fi
+done
+if [ -n "${DUALCONTACT:-}" ]; then invocation="${invocation}DUALCONTACT=$bin_shown "; fi
+if [ -n "${EXTRA_PRM:-}" ]; then invocation="${invocation}EXTRA_PRM=... "; fi
+invocation="${invocation}bash doc/benchmark_hertz.sh $np $cycles"
 date_run="$(date -u '+%Y-%m-%d %H:%M UTC')"
 cores="$(nproc 2>/dev/null || echo '?')"
 cpu="$(awk -F': *' '/^model name/ {print $2; exit}' /proc/cpuinfo 2>/dev/null || true)"
@@ -93,11 +126,84 @@ if [ -n "$(git -C "$repo" status --porcelain --untracked-files=no -- source incl
   commit="$commit (with local changes to the code)"
 fi
 
+# The scene as it will run: the program's defaults, then the file with the
+# overrides (later 'set' lines win, as in deal.II's ParameterHandler).
+defaults="$tmp/defaults.prm"
+if ! "$bin" --print-parameters > "$defaults" 2> /dev/null; then
+  : > "$defaults"  # the fallbacks given to prm_value stand in
+fi
+prm_value() {  # prm_value 'Subsection/Entry' fallback
+  local value
+  value="$(awk -v want="$1" '
+    FNR == 1 { depth = 0 }
+    { line = $0; sub(/#.*/, "", line); gsub(/^[ \t]+|[ \t]+$/, "", line) }
+    line ~ /^subsection[ \t]/ { name = line; sub(/^subsection[ \t]+/, "", name); path[++depth] = name; next }
+    line == "end" { if (depth > 0) --depth; next }
+    line ~ /^set[ \t]/ {
+      key = line; sub(/^set[ \t]+/, "", key); value = key
+      sub(/[ \t]*=.*/, "", key); sub(/^[^=]*=[ \t]*/, "", value)
+      full = ""; for (i = 1; i <= depth; ++i) full = full path[i] "/"
+      if (full key == want) found = value
+    }
+    END { print found }' "$defaults" "$prm")"
+  printf '%s' "${value:-$2}"
+}
+is_zero() {  # every component of "a; b" is the number 0
+  awk -v e="$1" 'BEGIN { n = split(e, c, ";"); for (i = 1; i <= n; ++i) { gsub(/[ \t]/, "", c[i]); if (c[i] !~ /^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$/ || c[i] + 0 != 0) exit 1 } exit 0 }'
+}
+dimension="$(prm_value 'Geometry/Dimension' 2)"
+geometry="$(prm_value 'Geometry/Type' rectangle)"
+youngs="$(prm_value "Material/Young's modulus" 1)"
+poisson="$(prm_value "Material/Poisson's ratio" 0.3)"
+law="$(prm_value 'Friction/Law' none)"
+coefficient="$(prm_value 'Friction/Coefficient' 0)"
+threshold="$(prm_value 'Friction/Threshold' 0)"
+strategy="$(prm_value 'Friction/Threshold iteration' merged)"
+initial="$(prm_value 'Friction/Initial threshold' zero)"
+refinement="$(prm_value 'Refinement/Strategy' global)"
+nested="$(prm_value 'Refinement/Nested iteration' true)"
+r_rel="$(prm_value 'Solver/Augmentation parameter' 10)"
+chi_rel="$(prm_value 'Solver/Proximal parameter' 1e-3)"
+# what the file says it shows: its first comment line
+title="$(awk '/^[ \t]*#/ { sub(/^[ \t]*#[ \t]*/, ""); if ($0 != "") { print; exit } }' "$repo/prm/$scene.prm")"
+title="${title%.}"
+
+friction=0  # 1: friction acts, so the frictionless exact pressure is not exact
+friction_text="frictionless contact"
+case "$law" in
+  given)
+    if is_zero "$threshold"; then friction_text="given friction threshold g = 0 (the frictionless path runs)"
+    else friction=1; friction_text="given friction threshold (Tresca) g = \`$threshold\`, no threshold iteration"; fi ;;
+  coulomb)
+    if is_zero "$coefficient"; then friction_text="Coulomb friction with F = 0 (the frictionless path runs)"
+    else
+      friction=1
+      case "$strategy" in
+        nested) how="nested (successive approximations: g = F l1 after each converged Uzawa solve)" ;;
+        *) how="merged (g = F l1 after every Uzawa step)" ;;
+      esac
+      case "$initial" in
+        frictionless) first="g^0 = F times the frictionless pressure" ;;
+        *) first="g^0 = 0" ;;
+      esac
+      friction_text="Coulomb friction, F = \`$coefficient\`, threshold iteration $how, $first on the first mesh"
+    fi ;;
+esac
+if [ "$nested" = true ]; then
+  start_text="nested iteration: each mesh after the first starts from the previous mesh's v, l1, l2 and g (\`Refinement/Nested iteration = true\`)"
+else
+  start_text="cold starts: every mesh starts from v = 0, l1 = l2 = 0 (\`Refinement/Nested iteration = false\`)"
+fi
+
 echo "benchmark_hertz: mpirun -np $np $bin, $cycles cycles; log in $log"
 start=$(date +%s)
 status=0
+# The log goes into doc/: the temporary folder (output directory, parameter
+# file in messages) is named, not printed as a path of this machine.
 # shellcheck disable=SC2086
-mpirun ${MPIRUN_FLAGS:-} -np "$np" "$bin" "$prm" 2>&1 | tee "$log" || status=$?
+mpirun ${MPIRUN_FLAGS:-} -np "$np" "$bin" "$prm" 2>&1 |
+  awk -v t="$tmp" '{ while (t != "" && (i = index($0, t)) > 0) $0 = substr($0, 1, i - 1) "<temporary folder>" substr($0, i + length(t)); print; fflush() }' |
+  tee "$log" || status=$?
 elapsed=$(( $(date +%s) - start ))
 echo "benchmark_hertz: run took ${elapsed} s (exit status $status)"
 
@@ -107,19 +213,36 @@ if [ "$status" -ne 0 ] || [ ! -s "$csv" ]; then
   exit 1
 fi
 
+# the program's own account of the scene, from the log
+if [ "$friction" = 1 ] && grep -qF 'only friction holds the body tangentially' "$log"; then
+  friction_text="${friction_text/g^0 = 0/g^0 = F N / |Gamma_C| (only friction holds the body sideways; doc/theory.md §8)}"
+fi
+effects="$(awk '/^Effects composed/ { on = 1; next } on && /^[^ ]/ { exit } on { print "    " $0 }' "$log")"
+first_r="$(awk '/ contact: .* r = / { sub(/.* r = /, "r = "); print; exit }' "$log")"
+if [ "$dimension" = 2 ]; then plane=", plane strain"; else plane=""; fi
+
 {
   cat <<EOF
 # Hertz benchmark: contact solve vs. one linear solve
 
-Generated by \`${SCENE:+SCENE=$SCENE }${TAG:+TAG=$TAG }${EXTRA_PRM:+EXTRA_PRM=... }doc/benchmark_hertz.sh\` on $date_run; source tree at commit $commit,
-program \`$bin\` built $bin_date.
+Generated by \`$invocation\` on $date_run; source tree at commit $commit,
+program \`$bin_shown\` built $bin_date.
 
-Scene \`prm/$scene.prm\` (Hertz contact of a half disc on a rigid
-plane, plane strain, Q1) run for $cycles global-refinement cycles with
-\`Output/Write vtu = false\` and \`Solver/Time a reference linear solve = true\`:
+**Scene** \`prm/$scene.prm\`${title:+: $title.} As run (the file, the
+overrides below${EXTRA_PRM:+, EXTRA_PRM} and the program's defaults):
+- ${dimension}D $geometry, E = $youngs, nu = $poisson$plane, Q1 elements;
+- $friction_text;
+- $cycles cycle(s), refinement strategy \`$refinement\`; $start_text;
+- r_rel = $r_rel, chi_rel = $chi_rel${first_r:+ (on the first mesh $first_r)};
+- \`Output/Write vtu = false\`, \`Solver/Time a reference linear solve = true\`.
 
-    ${DUALCONTACT:+DUALCONTACT=$DUALCONTACT }bash doc/benchmark_hertz.sh $np $cycles
+    $invocation
     # i.e. $cmd
+EOF
+  if [ -n "$effects" ]; then
+    printf '\nThe program'"'"'s account of the scene (from the log):\n\n%s\n' "$effects"
+  fi
+  cat <<EOF
 
 Machine: $cores cores${cpu:+ ($cpu)}${mem_gb:+, $mem_gb GB}; $np MPI rank(s).
 Load average (1, 5, 15 min) just before the run: $load_before
@@ -137,9 +260,17 @@ start = nested (from the previous mesh's solution and multipliers,
 Refinement/Nested iteration) or cold; ratio, all meshes = the contact solves
 and transfers of this mesh and of all coarser ones, over the linear solve on
 this mesh; pressure error = relative L2 error of the contact pressure on
-Gamma_C against Hertz. The target is judged on "ratio".
-
+Gamma_C against the scene's \`Exact solution/Contact pressure\`. The target
+is judged on "ratio".
 EOF
+  if [ "$friction" = 1 ]; then
+    cat <<'EOF'
+With friction that exact solution is the frictionless (Hertz) pressure,
+which friction changes (doc/theory.md §9), so this error levels off instead
+of going to zero.
+EOF
+  fi
+  echo
   awk -F, -v target="$target" '
     NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
     {
