@@ -251,7 +251,7 @@ Total run time (including mesh set-up, output and the reference solves):
 $elapsed s. Screen log: \`doc/benchmark_${tag}.log\`.${EXTRA_PRM:+ Extra entries: \`$(echo "$EXTRA_PRM" | tr "\n" " ")\`.}
 
 Columns: contact nodes = nodes on the contact boundary, active = nodes in
-contact at the end; Uzawa / Newton / CG = steps of loops 2 and 3 and CG
+contact at the end; Uzawa / Newton / CG = steps of the Uzawa and Newton iterations and CG
 iterations, summed over the contact solve; AMG = AMG set-ups in the contact
 solve; memory = peak resident memory summed over ranks; contact = wall time of
 the assembly and the contact solve; linear = wall time of the assembly and of
@@ -282,7 +282,7 @@ EOF
       sequence += contact + $c["time_refine"]
       whole = (linear > 0) ? sequence / linear : -1
       rows[++n] = sprintf("| %d | %s | %d | %d | %d | %d | %d | %d | %d | %.0f | %.3f | %.3f | %s | %s | %.2e |",
-        $c["dofs"], ($c["warm_start"] == 1) ? "nested" : "cold", $c["contact_nodes"], $c["active_nodes"], $c["friction_steps"], $c["uzawa_steps"],
+        $c["dofs"], ($c["warm_start"] == 1) ? "nested" : "cold", $c["contact_nodes"], $c["active_nodes"], $c["threshold_steps"], $c["uzawa_steps"],
         $c["newton_steps"], $c["linear_iterations"], $c["amg_setups"],
         $c["memory_mb"], contact, linear,
         (ratio >= 0) ? sprintf("%.2f", ratio) : "n/a",
@@ -294,7 +294,7 @@ EOF
       }
     }
     END {
-      print "| DoFs | start | contact nodes | active | loop 1 | Uzawa | Newton | CG | AMG set-ups | memory [MB] | contact [s] | linear [s] | ratio | ratio, all meshes | pressure error |"
+      print "| DoFs | start | contact nodes | active | threshold steps | Uzawa | Newton | CG | AMG set-ups | memory [MB] | contact [s] | linear [s] | ratio | ratio, all meshes | pressure error |"
       print "|---:|:---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
       for (i = 1; i <= n; ++i) print rows[i]
       print ""

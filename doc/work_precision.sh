@@ -442,7 +442,7 @@ EOF
     }
     {
       k = ++nrow[r]
-      split("cycle cells dofs contact_nodes pressure_error half_width_error peak_pressure_error friction_steps uzawa_steps newton_steps linear_iterations time_solve time_total", cols, " ")
+      split("cycle cells dofs contact_nodes pressure_error half_width_error peak_pressure_error threshold_steps uzawa_steps newton_steps linear_iterations time_solve time_total", cols, " ")
       for (j in cols) {
         col = cols[j]
         val[r, k, col] = (col in c) ? $c[col] + 0 : 0
@@ -455,14 +455,14 @@ EOF
       print ""
       print "Columns: contact nodes = nodes on Gamma_C; rate = convergence order of the"
       print "pressure error against the DoFs from the previous cycle, -ln(e_k/e_(k-1)) / ln(N_k/N_(k-1))"
-      print "(0.5 is O(h) on uniform meshes in 2D); loop 1 / Uzawa / Newton = steps of the three"
+      print "(0.5 is O(h) on uniform meshes in 2D); threshold / Uzawa / Newton = steps of the three"
       print "loops and CG = conjugate-gradient iterations, summed over the cycle; solve = wall time"
       print "of the contact solve of this cycle; cumulative = time_total."
       for (r = 1; r <= nrun; ++r) {
         print ""
         print "### " strat[r] ", " mode[r]
         print ""
-        print "| cycle | cells | DoFs | contact nodes | pressure error | rate | half-width error | peak error | loop 1 | Uzawa | Newton | CG | solve [s] | cumulative [s] |"
+        print "| cycle | cells | DoFs | contact nodes | pressure error | rate | half-width error | peak error | threshold | Uzawa | Newton | CG | solve [s] | cumulative [s] |"
         print "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
         for (i = 1; i <= nrow[r]; ++i) {
           rate = "";
@@ -471,7 +471,7 @@ EOF
           printf "| %d | %d | %d | %d | %.2e | %s | %+.2e | %+.2e | %d | %d | %d | %d | %s | %s |\n",
             val[r, i, "cycle"], val[r, i, "cells"], val[r, i, "dofs"], val[r, i, "contact_nodes"],
             val[r, i, "pressure_error"], rate, val[r, i, "half_width_error"], val[r, i, "peak_pressure_error"],
-            val[r, i, "friction_steps"], val[r, i, "uzawa_steps"], val[r, i, "newton_steps"], val[r, i, "linear_iterations"],
+            val[r, i, "threshold_steps"], val[r, i, "uzawa_steps"], val[r, i, "newton_steps"], val[r, i, "linear_iterations"],
             fmt_time(val[r, i, "time_solve"]), fmt_time(val[r, i, "time_total"])
         }
       }
