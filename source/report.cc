@@ -262,7 +262,8 @@ namespace dualcontact
           }
         pcout << std::scientific << std::setprecision(2)
               << "\n   Uzawa contraction rate " << solve.rate
-              << ": the last change of l1 understates its error, estimated "
+              << ", remaining error of l1 estimated from it (d rho/(1 - rho), "
+                 "doc/theory.md §6) "
               << solve.estimated_l1_error << std::defaultfloat << '\n';
         if (parameters.solver.time_reference_solve)
           pcout << "   reference: one linear solve on this mesh "
