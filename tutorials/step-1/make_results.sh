@@ -1,0 +1,12 @@
+#!/bin/bash
+# Regenerate the results of step-1: run the program on 2 MPI ranks (output
+# in ./output), then draw the figures (pressure.svg, uzawa_convergence.svg).
+# Run from anywhere; the build is expected in ../../build (the top-level
+# build of the project).
+set -eo pipefail
+cd "$(dirname "$0")"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mkdir -p output
+mpirun -np 2 ../../build/tutorials/step-1 step-1.prm | tee output/screen.out
+gnuplot plot.gp
+echo "screen output in output/screen.out, figures pressure.svg, uzawa_convergence.svg"
