@@ -32,10 +32,11 @@ namespace dualcontact
                                       MPI_Comm          mpi_communicator,
                                       std::ostream     &out)
       : mpi_communicator(mpi_communicator)
+      , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       , parameters(parameters)
       , scene(parameters)
       , computing_timer(mpi_communicator,
-                        out,
+                        pcout,
                         TimerOutput::never,
                         TimerOutput::wall_times)
       , report(parameters, scene, computing_timer, mpi_communicator, out)

@@ -6,6 +6,7 @@
 #ifndef dualcontact_contact_problem_h
 #define dualcontact_contact_problem_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 
@@ -208,8 +209,10 @@ namespace dualcontact
     multiplier_fields(TrilinosWrappers::MPI::Vector &multipliers,
                       TrilinosWrappers::MPI::Vector &threshold) const;
 
-    // MPI
-    MPI_Comm mpi_communicator;
+    // MPI, and the screen of rank 0 (for the timer's summary; everything
+    // else is printed by the report)
+    MPI_Comm           mpi_communicator;
+    ConditionalOStream pcout;
 
     // the scene (built first: bad input throws before anything else exists)
     const Parameters &parameters;
