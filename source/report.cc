@@ -27,7 +27,7 @@ namespace dualcontact
               out << ',';
             if (i < entries.size())
               {
-                entries[i].cache_string(false, 10);
+                entries[i].cache_string(true, 10); // small residuals too
                 out << entries[i].get_cached_string();
               }
           }
