@@ -257,11 +257,27 @@ namespace dualcontact
                               const unsigned int uzawa_step,
                               IterationObserver *observer)
   {
-    system                   = &system_;
-    const MPI_Comm comm      = v.get_mpi_communicator();
-    const unsigned n_nodes   = contact.n_local_nodes();
-    const double   load      = system->load.l2_norm();
-    const double   reference = load > 0. ? load : 1.;
+    system                 = &system_;
+    const MPI_Comm comm    = v.get_mpi_communicator();
+    const unsigned n_nodes = contact.n_local_nodes();
+    // The force scale the gradient is measured against. A gradient g left
+    // at a contact node moves its multipliers in the next update by about
+    // g_s / m_s (doc/theory.md §6), so the Newton tolerance must be
+    // relative to the contact forces m_s (l1_s, l2_s), not only to the load
+    // b: when displacements are prescribed, b holds their lifting, which
+    // can be far larger than the contact forces, and a tolerance relative
+    // to it leaves the Uzawa iteration asking for changes of the
+    // multipliers that no proximal step resolves.
+    const double load  = system->load.l2_norm();
+    double       local = 0.;
+    for (unsigned int s = 0; s < n_nodes; ++s)
+      local += std::pow(contact.nodes[s].weight, 2) *
+               (contact.l1[s] * contact.l1[s] +
+                (contact.friction ? contact.l2[s].norm_square() : 0.));
+    const double contact_forces = std::sqrt(Utilities::MPI::sum(local, comm));
+    const double reference      = contact_forces > 0. ?
+                                    std::min(load, contact_forces) :
+                                    (load > 0. ? load : 1.);
 
     // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k.
     rhs.reinit(system->load);
