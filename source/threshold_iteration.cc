@@ -34,8 +34,7 @@ namespace dualcontact
     };
     if (warm_start)
       say("threshold iteration: g^0 carried from the previous mesh");
-    else if (parameters.strategy == FrictionStrategy::nested &&
-             held_by_friction_pressure > 0.)
+    else if (held_by_friction_pressure > 0.)
       {
         std::ostringstream text;
         text << "threshold iteration: only friction holds the body "
