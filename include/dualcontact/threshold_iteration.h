@@ -32,9 +32,10 @@ namespace dualcontact
      * with `warm_start` (nested iteration), the thresholds in `contact`,
      * carried from the previous mesh. If only friction holds the body
      * tangentially under a tangential load, the problems with g^0 = 0 have
-     * no solution; the caller then passes the mean contact pressure
-     * N / |Gamma_C| as `held_by_friction_pressure` and the nested strategy
-     * starts from the threshold at that pressure, which holds the load.
+     * no solution (nested) or let the body slide first (merged); the caller
+     * then passes the mean contact pressure N / |Gamma_C| as
+     * `held_by_friction_pressure` and both strategies start from the
+     * threshold at that pressure, which holds the load (doc/theory.md §8).
      * Every step of every loop is reported to `observer`.
      */
     ContactStatistics
