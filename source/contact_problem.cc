@@ -82,7 +82,8 @@ namespace dualcontact
             result.zone = measure_contact_zone();
             result.cold = compare_with_cold_start();
           }
-        result.errors = postprocess();
+        result.errors    = postprocess();
+        result.reactions = compute_reactions();
 
         output_results(cycle);
         report.end_cycle(result);
@@ -539,6 +540,15 @@ namespace dualcontact
     figures.difference_l1 =
       relative_change(std::sqrt(sums[0]), std::sqrt(sums[1]));
     return figures;
+  }
+
+  template <int dim>
+  ReactionFigures
+  ContactProblem<dim>::compute_reactions() const
+  {
+    TimerOutput::Scope t(computing_timer, "postprocess");
+    return dualcontact::compute_reactions(
+      mapping, dof_handler, scene, constraints, solution);
   }
 
   template <int dim>

@@ -1,5 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -14,6 +16,131 @@
 
 namespace dualcontact
 {
+  namespace
+  {
+    /**
+     * The cell terms of linear elasticity: the stiffness of a(u, v) =
+     * int sigma(u):eps(v), the load int f.v + int_{Gamma_N} T.v (only the
+     * loads the scene has) and, if asked, the mass matrix int u.v.
+     */
+    template <int dim>
+    class CellAssembler
+    {
+    public:
+      CellAssembler(const Mapping<dim>       &mapping,
+                    const FiniteElement<dim> &fe,
+                    const Scene<dim>         &scene)
+          : fe(fe)
+          , scene(scene)
+          , lambda(scene.parameters.material.lambda())
+          , mu(scene.parameters.material.mu())
+          , quadrature(fe.degree + 1)
+          , face_quadrature(fe.degree + 1)
+          , fe_values(mapping,
+                      fe,
+                      quadrature,
+                      update_values | update_gradients |
+                        update_quadrature_points | update_JxW_values)
+          , fe_face_values(mapping,
+                           fe,
+                           face_quadrature,
+                           update_values | update_quadrature_points |
+                             update_JxW_values)
+          , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+          , mass(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+          , rhs(fe.n_dofs_per_cell())
+          , eps(fe.n_dofs_per_cell())
+          , div(fe.n_dofs_per_cell())
+          , load_values(quadrature.size(), Vector<double>(dim))
+          , traction_values(face_quadrature.size(), Vector<double>(dim))
+          , traction_ids(scene.ids_with(BoundaryCondition::traction))
+      {}
+
+      /** Fill `matrix`, `rhs` and, with `with_mass`, `mass` for `cell`. */
+      void
+      assemble(const typename DoFHandler<dim>::active_cell_iterator &cell,
+               const bool                                            with_mass)
+      {
+        const unsigned int               n_dofs = fe.n_dofs_per_cell();
+        const FEValuesExtractors::Vector displacement(0);
+        const Function<dim>             *body_force = scene.body_force();
+        fe_values.reinit(cell);
+        matrix = 0;
+        mass   = 0;
+        rhs    = 0;
+        if (body_force != nullptr)
+          body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                        load_values);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                div[i] = trace(eps[i]);
+              }
+            const double JxW = fe_values.JxW(q);
+            // sigma(u):eps(v) = lambda div u div v + 2 mu eps(u):eps(v)
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                for (unsigned int j = 0; j <= i; ++j)
+                  matrix(i, j) +=
+                    (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
+                    JxW;
+                if (with_mass)
+                  for (unsigned int j = 0; j <= i; ++j)
+                    if (fe.system_to_component_index(i).first ==
+                        fe.system_to_component_index(j).first)
+                      mass(i, j) += fe_values.shape_value(i, q) *
+                                    fe_values.shape_value(j, q) * JxW;
+                if (body_force != nullptr)
+                  rhs(i) +=
+                    load_values[q](fe.system_to_component_index(i).first) *
+                    fe_values.shape_value(i, q) * JxW;
+              }
+          }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = i + 1; j < n_dofs; ++j)
+            {
+              matrix(i, j) = matrix(j, i);
+              mass(i, j)   = mass(j, i);
+            }
+
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && traction_ids.count(face->boundary_id()))
+            if (const Function<dim> *traction =
+                  scene.traction(face->boundary_id()))
+              {
+                fe_face_values.reinit(cell, face);
+                traction->vector_value_list(
+                  fe_face_values.get_quadrature_points(), traction_values);
+                for (const unsigned int q :
+                     fe_face_values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    rhs(i) += traction_values[q](
+                                fe.system_to_component_index(i).first) *
+                              fe_face_values.shape_value(i, q) *
+                              fe_face_values.JxW(q);
+              }
+      }
+
+      const FiniteElement<dim> &fe;
+      const Scene<dim>         &scene;
+      const double              lambda, mu;
+      const QGauss<dim>         quadrature;
+      const QGauss<dim - 1>     face_quadrature;
+      FEValues<dim>             fe_values;
+      FEFaceValues<dim>         fe_face_values;
+      FullMatrix<double>        matrix, mass;
+      Vector<double>            rhs;
+
+    private:
+      std::vector<SymmetricTensor<2, dim>> eps;
+      std::vector<double>                  div;
+      std::vector<Vector<double>>          load_values, traction_values;
+      const std::set<types::boundary_id>   traction_ids;
+    };
+  } // namespace
+
   template <int dim>
   void
   assemble_elasticity(const Mapping<dim>              &mapping,
@@ -24,39 +151,9 @@ namespace dualcontact
                       TrilinosWrappers::MPI::Vector   &system_rhs,
                       TrilinosWrappers::SparseMatrix  *mass_matrix)
   {
-    const FiniteElement<dim> &fe     = dof_handler.get_fe();
-    const double              lambda = scene.parameters.material.lambda();
-    const double              mu     = scene.parameters.material.mu();
-
-    const QGauss<dim>     quadrature(fe.degree + 1);
-    const QGauss<dim - 1> face_quadrature(fe.degree + 1);
-    FEValues<dim>         fe_values(mapping,
-                            fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(mapping,
-                                     fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
-
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
-    Vector<double>     cell_rhs(dofs_per_cell);
-    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
-
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
-    std::vector<double>                  div(dofs_per_cell);
-    std::vector<Vector<double>>          load_values(quadrature.size(),
-                                            Vector<double>(dim));
-    std::vector<Vector<double>>          traction_values(face_quadrature.size(),
-                                                Vector<double>(dim));
-    const Function<dim>                 *body_force = scene.body_force();
-    const auto traction_ids = scene.ids_with(BoundaryCondition::traction);
-
+    CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
+    std::vector<types::global_dof_index> dof_indices(
+      dof_handler.get_fe().n_dofs_per_cell());
     system_matrix = 0;
     system_rhs    = 0;
     if (mass_matrix != nullptr)
@@ -64,86 +161,80 @@ namespace dualcontact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
-          cell_matrix = 0;
-          cell_mass   = 0;
-          cell_rhs    = 0;
-          if (body_force != nullptr)
-            body_force->vector_value_list(fe_values.get_quadrature_points(),
-                                          load_values);
-
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
-                  div[i] = trace(eps[i]);
-                }
-              const double JxW = fe_values.JxW(q);
-              // sigma(u):eps(v) = lambda div u div v + 2 mu eps(u):eps(v)
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  for (unsigned int j = 0; j <= i; ++j)
-                    cell_matrix(i, j) +=
-                      (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
-                      JxW;
-                  if (mass_matrix != nullptr)
-                    for (unsigned int j = 0; j <= i; ++j)
-                      if (fe.system_to_component_index(i).first ==
-                          fe.system_to_component_index(j).first)
-                        cell_mass(i, j) += fe_values.shape_value(i, q) *
-                                           fe_values.shape_value(j, q) * JxW;
-                  if (body_force != nullptr)
-                    {
-                      const unsigned int c =
-                        fe.system_to_component_index(i).first;
-                      cell_rhs(i) +=
-                        load_values[q](c) * fe_values.shape_value(i, q) * JxW;
-                    }
-                }
-            }
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-              {
-                cell_matrix(i, j) = cell_matrix(j, i);
-                cell_mass(i, j)   = cell_mass(j, i);
-              }
-
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && traction_ids.count(face->boundary_id()))
-              if (const Function<dim> *traction =
-                    scene.traction(face->boundary_id()))
-                {
-                  fe_face_values.reinit(cell, face);
-                  traction->vector_value_list(
-                    fe_face_values.get_quadrature_points(), traction_values);
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      {
-                        const unsigned int c =
-                          fe.system_to_component_index(i).first;
-                        cell_rhs(i) += traction_values[q](c) *
-                                       fe_face_values.shape_value(i, q) *
-                                       fe_face_values.JxW(q);
-                      }
-                }
-
-          cell->get_dof_indices(local_dof_indices);
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 cell_rhs,
-                                                 local_dof_indices,
-                                                 system_matrix,
-                                                 system_rhs);
+          local.assemble(cell, mass_matrix != nullptr);
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(
+            local.matrix, local.rhs, dof_indices, system_matrix, system_rhs);
           if (mass_matrix != nullptr)
-            constraints.distribute_local_to_global(cell_mass,
-                                                   local_dof_indices,
+            constraints.distribute_local_to_global(local.mass,
+                                                   dof_indices,
                                                    *mass_matrix);
         }
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     if (mass_matrix != nullptr)
       mass_matrix->compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  ReactionFigures
+  compute_reactions(const Mapping<dim>                  &mapping,
+                    const DoFHandler<dim>               &dof_handler,
+                    const Scene<dim>                    &scene,
+                    const AffineConstraints<double>     &constraints,
+                    const TrilinosWrappers::MPI::Vector &solution)
+  {
+    // The residual of the unconstrained equations, R = A u - f, is zero at
+    // every free DoF; at a constrained one it is the force the support
+    // exerts on the body there. Summed over the DoFs of a boundary id it is
+    // that boundary's reaction. Only constrained DoFs count: a slider's
+    // tangential DoFs are free, and at a node shared with the contact
+    // boundary the free components carry the contact force, not a reaction.
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+    CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
+    const unsigned int n_dofs = dof_handler.get_fe().n_dofs_per_cell();
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+    TrilinosWrappers::MPI::Vector residual(dof_handler.locally_owned_dofs(),
+                                           comm);
+    Vector<double>                u(n_dofs), r(n_dofs);
+    ReactionFigures               figures;
+    std::array<double, 3>         load{};
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          local.assemble(cell, false);
+          cell->get_dof_values(solution, u);
+          local.matrix.vmult(r, u);
+          r -= local.rhs;
+          cell->get_dof_indices(dof_indices);
+          residual.add(dof_indices, r);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            load[local.fe.system_to_component_index(i).first] += local.rhs(i);
+        }
+    residual.compress(VectorOperation::add);
+    for (unsigned int c = 0; c < dim; ++c)
+      figures.applied_load[c] = Utilities::MPI::sum(load[c], comm);
+
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    for (const BoundaryCondition condition :
+         {BoundaryCondition::fixed, BoundaryCondition::normal_fixed})
+      for (const types::boundary_id id : scene.ids_with(condition))
+        {
+          std::array<double, 3> &reaction = figures.on_id[id];
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              ComponentMask mask(dim, false);
+              mask.set(c, true);
+              const IndexSet dofs =
+                DoFTools::extract_boundary_dofs(dof_handler, mask, {id});
+              double sum = 0.;
+              for (const auto i : dofs)
+                if (owned.is_element(i) && constraints.is_constrained(i))
+                  sum += residual[i];
+              reaction[c] = Utilities::MPI::sum(sum, comm);
+            }
+        }
+    return figures;
   }
 
   template <int dim>
@@ -280,21 +371,27 @@ namespace dualcontact
     return control.last_step();
   }
 
-#define DUALCONTACT_INSTANTIATE(dim)                                        \
-  template void assemble_elasticity<dim>(const Mapping<dim> &,              \
+#define DUALCONTACT_INSTANTIATE(dim)                                                   \
+  template void            assemble_elasticity<dim>(const Mapping<dim> &,              \
                                          const DoFHandler<dim> &,           \
                                          const Scene<dim> &,                \
                                          const AffineConstraints<double> &, \
                                          TrilinosWrappers::SparseMatrix &,  \
                                          TrilinosWrappers::MPI::Vector &,   \
                                          TrilinosWrappers::SparseMatrix *); \
-  template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(       \
-    const Mapping<dim> &,                                                   \
-    const DoFHandler<dim> &,                                                \
-    const TrilinosWrappers::SparseMatrix &,                                 \
-    const bool,                                                             \
-    const Point<dim> &,                                                     \
-    const double);                                                          \
+  template ReactionFigures compute_reactions<dim>(                                     \
+    const Mapping<dim> &,                                                              \
+    const DoFHandler<dim> &,                                                           \
+    const Scene<dim> &,                                                                \
+    const AffineConstraints<double> &,                                                 \
+    const TrilinosWrappers::MPI::Vector &);                                            \
+  template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(                  \
+    const Mapping<dim> &,                                                              \
+    const DoFHandler<dim> &,                                                           \
+    const TrilinosWrappers::SparseMatrix &,                                            \
+    const bool,                                                                        \
+    const Point<dim> &,                                                                \
+    const double);                                                                     \
   template class ElasticSolver<dim>;
 
   DUALCONTACT_INSTANTIATE(2)

@@ -274,6 +274,24 @@ namespace dualcontact
                      (r.time.assembly + solve.time_reference)
                 << std::defaultfloat << " (assembly included)\n";
       }
+    // the supports' reactions and the loads: with the contact force they
+    // balance
+    if (!r.reactions.on_id.empty())
+      {
+        const auto vector = [](const std::array<double, 3> &f) {
+          std::ostringstream s;
+          s << std::setprecision(8) << "(" << f[0];
+          for (unsigned int c = 1; c < dim; ++c)
+            s << ", " << f[c];
+          s << ")";
+          return s.str();
+        };
+        pcout << "   reactions on the body:";
+        for (const auto &[id, f] : r.reactions.on_id)
+          pcout << " id " << static_cast<unsigned int>(id) << " " << vector(f)
+                << ";";
+        pcout << " applied loads " << vector(r.reactions.applied_load) << '\n';
+      }
     pcout << std::scientific << std::setprecision(6)
           << "   ||u||_L2 = " << r.errors.u_l2;
     if (scene.exact_displacement() != nullptr)
@@ -332,6 +350,13 @@ namespace dualcontact
     t.add_value("cold_time_solve", r.cold.time);
     t.add_value("cold_difference_v", r.cold.difference_v);
     t.add_value("cold_difference_l1", r.cold.difference_l1);
+    const char *axes[] = {"x", "y", "z"};
+    for (unsigned int c = 0; c < dim; ++c)
+      t.add_value(std::string("applied_load_") + axes[c],
+                  r.reactions.applied_load[c]);
+    for (const auto &[id, f] : r.reactions.on_id)
+      for (unsigned int c = 0; c < dim; ++c)
+        t.add_value("reaction_" + std::to_string(id) + "_" + axes[c], f[c]);
     t.add_value("time_refine", r.time.refine);
     t.add_value("time_setup", r.time.setup);
     t.add_value("time_assembly", r.time.assembly);

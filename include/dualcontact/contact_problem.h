@@ -113,6 +113,13 @@ namespace dualcontact
     ColdStartFigures
     compare_with_cold_start();
 
+    /**
+     * The reaction force of each 'fixed' and 'normal fixed' boundary id on
+     * the body, and the resultant of the applied loads.
+     */
+    ReactionFigures
+    compute_reactions() const;
+
     /** Norms of u and of its error against an exact solution. */
     ErrorNorms
     postprocess() const;

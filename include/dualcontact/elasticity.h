@@ -15,6 +15,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dualcontact/figures.h>
 #include <dualcontact/scene.h>
 
 #include <Epetra_MultiVector.h>
@@ -42,6 +43,22 @@ namespace dualcontact
                       TrilinosWrappers::SparseMatrix  &system_matrix,
                       TrilinosWrappers::MPI::Vector   &system_rhs,
                       TrilinosWrappers::SparseMatrix  *mass_matrix = nullptr);
+
+  /**
+   * The reaction forces on the body from its supports: at every 'fixed' and
+   * 'normal fixed' boundary id, the sum over that boundary's DoFs of the
+   * residual A u - f of the unconstrained equations at the DoFs that
+   * `constraints` constrain (at the free ones it is zero, or a contact
+   * force); and the resultant of the applied loads f. `solution` is
+   * ghosted.
+   */
+  template <int dim>
+  ReactionFigures
+  compute_reactions(const Mapping<dim>                  &mapping,
+                    const DoFHandler<dim>               &dof_handler,
+                    const Scene<dim>                    &scene,
+                    const AffineConstraints<double>     &constraints,
+                    const TrilinosWrappers::MPI::Vector &solution);
 
   /**
    * The rigid-body modes of the displacement space (dim translations and

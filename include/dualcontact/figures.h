@@ -7,6 +7,9 @@
 
 #include <dualcontact/contact_system.h>
 
+#include <array>
+#include <map>
+
 namespace dualcontact
 {
   using namespace dealii;
@@ -84,6 +87,19 @@ namespace dualcontact
     double h1_semi = 0.; // |u - u_exact|_H1
   };
 
+  /**
+   * compute_reactions(): the force each support ('fixed', 'normal fixed'
+   * boundary id) exerts on the body, and the resultant of the applied loads
+   * (body force and tractions), components x, y (z) [force, per unit
+   * thickness in 2D]. In equilibrium the reactions, the contact force and
+   * the loads add up to zero.
+   */
+  struct ReactionFigures
+  {
+    std::map<types::boundary_id, std::array<double, 3>> on_id;
+    std::array<double, 3>                               applied_load{};
+  };
+
   /** Wall times of the phases of one cycle [s], from the TimerOutput. */
   struct PhaseTimes
   {
@@ -104,6 +120,7 @@ namespace dualcontact
     ContactZoneFigures zone;
     ColdStartFigures   cold;
     ErrorNorms         errors;
+    ReactionFigures    reactions;
     PhaseTimes         time;
     double             memory_mb = 0.; // peak resident memory, all ranks
   };

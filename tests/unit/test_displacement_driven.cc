@@ -119,6 +119,25 @@ TEST_CASE("Displacement-driven block with Coulomb friction converges on "
       CHECK(r.solve.uzawa_steps <= 15);
     }
   check_solution(run, 0.3);
+
+  // the reaction of the pushed top balances the contact force: its normal
+  // part the contact force, its tangential part the friction force
+  for (const CycleResult &r : run.problem->results())
+    {
+      REQUIRE(r.reactions.on_id.count(3) == 1);
+      const auto &reaction = r.reactions.on_id.at(3);
+      INFO("cycle " << r.mesh.cycle << ": reaction (" << reaction[0] << ", "
+                    << reaction[1] << "), contact force "
+                    << r.zone.contact_force << ", tangential "
+                    << r.zone.tangential_force);
+      CHECK(std::abs(reaction[1] + r.zone.contact_force) <=
+            1e-8 * r.zone.contact_force);
+      CHECK(std::abs(std::abs(reaction[0]) - r.zone.tangential_force) <=
+            1e-8 * r.zone.contact_force);
+      CHECK(r.zone.tangential_force > 0.);
+      CHECK(r.reactions.applied_load[0] == 0.);
+      CHECK(r.reactions.applied_load[1] == 0.);
+    }
 }
 
 TEST_CASE("Half disc pressed by a prescribed depth converges on every mesh",
@@ -139,5 +158,10 @@ TEST_CASE("Half disc pressed by a prescribed depth converges on every mesh",
           CHECK(r.zone.contact_force > 0.);
         }
       check_solution(run, law == "coulomb" ? 0.3 : 0.);
+      // the pressed top carries the contact force back; nothing sideways
+      const auto &reaction = run.last().reactions.on_id.at(1);
+      CHECK(std::abs(reaction[1] + run.last().zone.contact_force) <=
+            1e-8 * run.last().zone.contact_force);
+      CHECK(std::abs(reaction[0]) <= 1e-8 * run.last().zone.contact_force);
     }
 }
