@@ -546,6 +546,10 @@ namespace dualcontact
   ReactionFigures
   ContactProblem<dim>::compute_reactions() const
   {
+    // one more pass over the cells: only where there are supports
+    if (scene.ids_with(BoundaryCondition::fixed).empty() &&
+        scene.ids_with(BoundaryCondition::normal_fixed).empty())
+      return {};
     TimerOutput::Scope t(computing_timer, "postprocess");
     return dualcontact::compute_reactions(
       mapping, dof_handler, scene, constraints, solution);

@@ -115,7 +115,8 @@ namespace dualcontact
 
     /**
      * The reaction force of each 'fixed' and 'normal fixed' boundary id on
-     * the body, and the resultant of the applied loads.
+     * the body, and the resultant of the applied loads (nothing, and no
+     * extra pass over the cells, in a scene without such ids).
      */
     ReactionFigures
     compute_reactions() const;
