@@ -57,6 +57,12 @@ namespace dualcontact
   {
     const auto &constraints = system->homogeneous_constraints;
     system->stiffness.vmult(smooth, v);
+    if (system->chi_scale != 1.)
+      {
+        TrilinosWrappers::MPI::Vector Mv(v);
+        system->mass.vmult(Mv, v);
+        smooth.add(system->proximal_correction(), Mv);
+      }
     smooth -= rhs;
     constraints.set_zero(smooth);
     gradient = smooth;
@@ -96,6 +102,8 @@ namespace dualcontact
     FullMatrix<double>                   local_matrix(dim, dim);
     std::vector<types::global_dof_index> local_dofs(dim);
     newton_matrix.copy_from(system->stiffness);
+    if (system->chi_scale != 1.)
+      newton_matrix.add(system->proximal_correction(), system->mass);
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
         const double m_r = contact.nodes[s].weight * system->r;
@@ -187,7 +195,12 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector   free_direction(direction), tmp(direction);
     system->homogeneous_constraints.set_zero(free_direction);
     system->stiffness.vmult(tmp, free_direction);
-    const double q2 = free_direction * tmp;
+    double q2 = free_direction * tmp;
+    if (system->chi_scale != 1.)
+      {
+        system->mass.vmult(tmp, free_direction);
+        q2 += system->proximal_correction() * (free_direction * tmp);
+      }
     const double q1 = smooth_gradient * direction;
     for (unsigned int s = 0; s < n; ++s)
       {
@@ -279,12 +292,13 @@ namespace dualcontact
                                     std::min(load, contact_forces) :
                                     (load > 0. ? load : 1.);
 
-    // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k.
+    // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k
+    // (chi the step's proximal weight).
     rhs.reinit(system->load);
     TrilinosWrappers::MPI::Vector tmp(system->load);
     system->mass.vmult(tmp, v_previous);
     rhs = system->load;
-    rhs.add(system->chi, tmp);
+    rhs.add(system->proximal_weight(), tmp);
 
     TrilinosWrappers::MPI::Vector smooth_gradient(rhs), gradient(rhs),
       direction(rhs), newton_rhs(rhs);

@@ -63,6 +63,8 @@ namespace dualcontact
     rate               = part.rate;
     estimated_l1_error = part.estimated_l1_error;
     change_g           = part.change_g;
+    chi_scale          = part.chi_scale;
+    at_roundoff_floor  = part.at_roundoff_floor;
   }
 
   template <int dim>

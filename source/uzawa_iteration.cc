@@ -3,10 +3,14 @@
 #include <deal.II/base/timer.h>
 
 #include <dualcontact/contact_functions.h>
+#include <dualcontact/input_error.h>
 #include <dualcontact/uzawa_iteration.h>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace dualcontact
 {
@@ -27,14 +31,14 @@ namespace dualcontact
     const unsigned int                   k,
     IterationObserver                   *observer)
   {
-    const double final_tolerance =
-      parameters.newton_tolerance_factor * parameters.uzawa_tolerance;
-    const double envelope =
-      std::max(final_tolerance,
-               parameters.initial_inner_tolerance *
-                 std::pow(parameters.inner_tolerance_reduction, k - 1.));
-    return newton.minimise(
-      system, contact, v_previous, v, envelope, final_tolerance, k, observer);
+    return newton.minimise(system,
+                           contact,
+                           v_previous,
+                           v,
+                           inner_envelope(k),
+                           final_inner_tolerance(),
+                           k,
+                           observer);
   }
 
   template <int dim>
@@ -128,6 +132,167 @@ namespace dualcontact
            (!update_threshold || record.change_g <= threshold_tolerance);
   }
 
+  namespace
+  {
+    // The largest of the changes the stopping test looks at.
+    double
+    largest_change(const IterationRecord &record, const bool friction)
+    {
+      return std::max(
+        {record.change_l1, record.change_v, friction ? record.change_l2 : 0.});
+    }
+
+    // The mean contraction rate of the largest change over the last (up
+    // to) n steps of `history`; 0 if there are fewer than two steps.
+    double
+    mean_rate(const std::vector<IterationRecord> &history,
+              const bool                          friction,
+              const unsigned int                  n)
+    {
+      if (history.size() < 2)
+        return 0.;
+      const std::size_t steps = std::min<std::size_t>(n, history.size() - 1);
+      const double      last  = largest_change(history.back(), friction);
+      const double      first =
+        largest_change(history[history.size() - 1 - steps], friction);
+      if (!(first > 0.) || !(last > 0.))
+        return 0.;
+      return std::pow(last / first, 1. / steps);
+    }
+  } // namespace
+
+  template <int dim>
+  bool
+  UzawaIteration<dim>::at_roundoff_floor(
+    const std::vector<IterationRecord> &history,
+    const bool                          friction) const
+  {
+    // The proximal steps no longer move v (the Newton iteration is at its
+    // final tolerance and takes no step, twice in a row), the constraint
+    // holds, and the changes of the multipliers stay where they are: the
+    // rest of them is what the inner solves leave (doc/theory.md §6), and
+    // no further Uzawa step can remove it.
+    const std::size_t n = history.size();
+    if (n < 3 || inner_envelope(n) > final_inner_tolerance())
+      return false;
+    const IterationRecord &last = history[n - 1], &before = history[n - 2];
+    const double           tolerance = parameters.uzawa_tolerance;
+    return last.newton_steps == 0 && before.newton_steps == 0 &&
+           last.violation <= tolerance && last.complementarity <= tolerance &&
+           largest_change(last, friction) <= 1e3 * tolerance &&
+           largest_change(last, friction) >=
+             0.5 * largest_change(before, friction);
+  }
+
+  template <int dim>
+  bool
+  UzawaIteration<dim>::contracts_slowly(
+    const std::vector<IterationRecord> &history,
+    const bool                          friction) const
+  {
+    // Three steps in a row that each took Newton steps (v moves) and
+    // reduced the changes by less than 30 %: a mode of v that hardly any
+    // contact term resists converges at about chi / (chi + its stiffness)
+    // per step (doc/theory.md §3.2).
+    const std::size_t n = history.size();
+    if (n < 5)
+      return false;
+    for (std::size_t i = n - 3; i < n; ++i)
+      {
+        const double rate = largest_change(history[i], friction) /
+                            largest_change(history[i - 1], friction);
+        if (history[i].newton_steps == 0 || !(rate > 0.7) || !(rate < 1.05))
+          return false;
+      }
+    return true;
+  }
+
+  template <int dim>
+  double
+  UzawaIteration<dim>::final_inner_tolerance() const
+  {
+    return parameters.newton_tolerance_factor * parameters.uzawa_tolerance;
+  }
+
+  template <int dim>
+  double
+  UzawaIteration<dim>::inner_envelope(const unsigned int k) const
+  {
+    return std::max(final_inner_tolerance(),
+                    parameters.initial_inner_tolerance *
+                      std::pow(parameters.inner_tolerance_reduction, k - 1.));
+  }
+
+  template <int dim>
+  std::string
+  UzawaIteration<dim>::non_convergence_message(
+    const std::vector<IterationRecord> &history,
+    const bool                          friction,
+    const double                        chi_scale) const
+  {
+    const IterationRecord &last      = history.back();
+    const double           tolerance = parameters.uzawa_tolerance;
+    const double           rate      = mean_rate(history, friction, 10);
+    const double           change    = largest_change(last, friction);
+    std::ostringstream     text;
+    text << "The Uzawa iteration (loop 2) did not converge in "
+         << history.size() << " steps (<Solver/Maximum Uzawa steps>). Last "
+         << "step: d(l1) " << format_number(last.change_l1);
+    if (friction)
+      text << ", d(l2) " << format_number(last.change_l2);
+    text << ", d(v) " << format_number(last.change_v) << ", violation "
+         << format_number(last.violation) << ", complementarity "
+         << format_number(last.complementarity) << " (tolerance "
+         << format_number(tolerance) << "); contraction rate "
+         << format_number(rate) << " per step over the last 10 steps. Likely "
+         << "causes, most likely first: ";
+
+    // whether the active set or the stick/slip split still changes
+    bool switching = false;
+    for (std::size_t i = history.size() > 10 ? history.size() - 10 : 1;
+         i < history.size();
+         ++i)
+      switching |= history[i].n_active != history[i - 1].n_active ||
+                   history[i].n_stick != history[i - 1].n_stick;
+    std::vector<std::string> causes;
+    if (last.violation > 1e2 * tolerance && rate > 0.9)
+      causes.emplace_back(
+        "the contact condition cannot be met (violation " +
+        format_number(last.violation) +
+        "): check that the foundation can hold the load (its <Foundation/"
+        "Point> and <Foundation/Normal>, and the loads)");
+    if (rate >= 0.999 || switching)
+      causes.emplace_back(
+        "the contact or stick/slip status of some nodes keeps switching: "
+        "lower <Solver/Augmentation parameter>");
+    if (rate > 0.5 && rate < 0.999)
+      {
+        std::ostringstream slow;
+        slow << "slow but steady convergence, about "
+             << static_cast<long>(
+                  std::ceil(std::log(tolerance / change) / std::log(rate)))
+             << " more steps needed: raise <Solver/Maximum Uzawa steps>";
+        if (friction && last.n_stick == 0)
+          slow << " (every contact node slips: the tangential load is close "
+                  "to what friction can hold, and only the proximal term, "
+                  "already lowered to "
+               << format_number(chi_scale)
+               << " of <Solver/Proximal parameter>, holds the body along the "
+                  "foundation)";
+        causes.push_back(slow.str());
+      }
+    if (last.newton_steps == 0 && change <= 1e3 * tolerance)
+      causes.emplace_back(
+        "the changes are at the round-off floor of the inner solves: raise "
+        "<Solver/Uzawa tolerance> or lower <Solver/Newton tolerance factor>");
+    causes.emplace_back("a too small <Solver/Augmentation parameter> (raise "
+                        "it) or <Solver/Maximum Uzawa steps> (raise it)");
+    for (std::size_t i = 0; i < causes.size(); ++i)
+      text << (i > 0 ? "; " : "") << "(" << i + 1 << ") " << causes[i];
+    text << ".";
+    return text.str();
+  }
+
   template <int dim>
   ContactStatistics
   UzawaIteration<dim>::solve(const ContactSystem           &system,
@@ -138,17 +303,24 @@ namespace dualcontact
                              const double                   threshold_tolerance)
   {
     newton.reset(); // a new system: build the preconditioner afresh
-    ContactStatistics             statistics;
+    // this solve's copy of the system: its proximal weight may be lowered
+    ContactSystem                step_system = system;
+    ContactStatistics            statistics;
     TrilinosWrappers::MPI::Vector v_previous(v);
-    double                        previous_change = 0.;
+    std::vector<IterationRecord> history;
+    unsigned int                 lowered_at = 0;
+    const auto                   say = [observer](const std::string &text) {
+      if (observer != nullptr)
+        observer->note(text);
+    };
     for (unsigned int k = 1; k <= parameters.max_uzawa_steps; ++k)
       {
         Timer timer(v.get_mpi_communicator(), true);
         v_previous = v;
         const NewtonStatistics newton_statistics =
-          proximal_step(system, contact, v_previous, v, k, observer);
-        IterationRecord record =
-          update_multipliers(system, contact, v_previous, v, update_threshold);
+          proximal_step(step_system, contact, v_previous, v, k, observer);
+        IterationRecord record = update_multipliers(
+          step_system, contact, v_previous, v, update_threshold);
         timer.stop();
         record.uzawa_step    = k;
         record.newton_steps  = newton_statistics.newton_steps;
@@ -157,6 +329,7 @@ namespace dualcontact
         record.time          = timer.wall_time();
         if (observer != nullptr)
           observer->uzawa_step(record, contact.friction, update_threshold);
+        history.push_back(record);
 
         statistics.uzawa_steps = k;
         statistics.newton_steps += record.newton_steps;
@@ -167,23 +340,54 @@ namespace dualcontact
         statistics.n_slip   = record.n_slip;
         statistics.change_g = record.change_g;
         // the observed contraction rate, and the error it implies
-        if (k > 1 && previous_change > 0.)
-          statistics.rate = std::min(record.change_l1 / previous_change, 0.999);
+        if (k > 1 && history[k - 2].change_l1 > 0.)
+          statistics.rate =
+            std::min(record.change_l1 / history[k - 2].change_l1, 0.999);
         statistics.estimated_l1_error =
           record.change_l1 * statistics.rate / (1. - statistics.rate);
-        previous_change = record.change_l1;
 
         if (converged(
               record, contact.friction, update_threshold, threshold_tolerance))
           return statistics;
+        if (at_roundoff_floor(history, contact.friction) &&
+            (!update_threshold ||
+             record.change_g <= std::max(threshold_tolerance,
+                                         1e3 * parameters.uzawa_tolerance)))
+          {
+            statistics.at_roundoff_floor = true;
+            say("Uzawa: converged at the round-off floor of the inner "
+                "solves: the Newton step no longer moves v, the violation (" +
+                format_number(record.violation) + ") and complementarity (" +
+                format_number(record.complementarity) +
+                ") are below the tolerance, and the multiplier changes stay "
+                "at " +
+                format_number(largest_change(record, contact.friction)) +
+                " (tolerance " + format_number(parameters.uzawa_tolerance) +
+                ")");
+            return statistics;
+          }
+        // A slow, steady contraction: a mode of v that only the proximal
+        // term holds. Lower its weight (doc/theory.md §3.2).
+        if (contracts_slowly(history, contact.friction) &&
+            k >= lowered_at + 4 &&
+            step_system.chi_scale > 1.5 * minimum_chi_scale)
+          {
+            const double rate = mean_rate(history, contact.friction, 3);
+            step_system.chi_scale /= 10.;
+            statistics.chi_scale = step_system.chi_scale;
+            lowered_at           = k;
+            newton.reset(); // a new matrix
+            say("Uzawa: contraction rate " + format_number(rate) +
+                " per step, a mode that hardly any contact term holds: the "
+                "proximal weight is lowered to " +
+                format_number(step_system.chi_scale) + " chi");
+          }
       }
 
     AssertThrow(false,
-                ExcMessage("The Uzawa iteration did not converge in " +
-                           std::to_string(parameters.max_uzawa_steps) +
-                           " steps (<Solver/Maximum Uzawa steps>). Raise the "
-                           "limit or <Solver/Augmentation parameter>, or check "
-                           "that the foundation can hold the load."));
+                ExcMessage(non_convergence_message(history,
+                                                   contact.friction,
+                                                   step_system.chi_scale)));
     return statistics;
   }
 

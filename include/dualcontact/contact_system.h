@@ -20,7 +20,9 @@ namespace dualcontact
   /**
    * The discrete problem one contact solve works on, all condensed with the
    * constraints: K = A + chi M, the mass matrix M, the load b, and r, chi
-   * (doc/theory.md §3, §5).
+   * (doc/theory.md §3, §5). The proximal weight of a step may be lowered
+   * below the chi that K holds (doc/theory.md §3.2): it is chi_scale chi,
+   * and the Newton iteration adds (chi_scale - 1) chi M where it needs it.
    */
   struct ContactSystem
   {
@@ -30,6 +32,21 @@ namespace dualcontact
     const AffineConstraints<double>      &homogeneous_constraints;
     double                                r;   // augmentation [stress/length]
     double                                chi; // proximal [stress/length^2]
+    double chi_scale = 1.; // the step's proximal weight is chi_scale chi
+
+    /** The proximal weight of the step [stress/length^2]. */
+    double
+    proximal_weight() const
+    {
+      return chi_scale * chi;
+    }
+
+    /** What K lacks for the step's weight: (chi_scale - 1) chi. */
+    double
+    proximal_correction() const
+    {
+      return (chi_scale - 1.) * chi;
+    }
   };
 
   /** The three loops, named by what they do (doc/theory.md §3). */
@@ -87,6 +104,12 @@ namespace dualcontact
     double rate               = 0.;
     double estimated_l1_error = 0.;
     double change_g           = 0.; // last change of g
+    // the proximal weight the iteration ended with, relative to chi (< 1
+    // if a slow mode made the Uzawa iteration lower it, doc/theory.md §3.2)
+    double chi_scale = 1.;
+    // the Uzawa iteration stopped at the round-off floor of its inner
+    // solves rather than at its tolerance (doc/theory.md §6)
+    bool at_roundoff_floor = false;
 
     /** Add the counts of `part`, a later solve; keep its final state. */
     void

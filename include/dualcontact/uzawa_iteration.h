@@ -16,6 +16,9 @@
 #include <dualcontact/newton_solver.h>
 #include <dualcontact/parameters.h>
 
+#include <string>
+#include <vector>
+
 namespace dualcontact
 {
   using namespace dealii;
@@ -72,8 +75,13 @@ namespace dualcontact
     /**
      * The whole iteration from v (owned entries, satisfying the
      * constraints) and the multipliers in `contact`, until converged().
-     * Every Newton and Uzawa step is reported to `observer`. Throws if it
-     * does not converge in <Solver/Maximum Uzawa steps>.
+     * Every Newton and Uzawa step is reported to `observer`. If the changes
+     * contract slowly while v still moves, the proximal weight of the steps
+     * is lowered (down to minimum_chi_scale chi); if they stall at the
+     * round-off floor of the inner solves with the constraint met, that is
+     * accepted as convergence and said. Throws, with the last changes and
+     * the likely causes, if it does not converge in <Solver/Maximum Uzawa
+     * steps>.
      */
     ContactStatistics
     solve(const ContactSystem           &system,
@@ -83,7 +91,39 @@ namespace dualcontact
           const bool                     update_threshold    = false,
           const double                   threshold_tolerance = 0.);
 
+    /**
+     * The smallest proximal weight, relative to chi, that solve() lowers it
+     * to when the iteration contracts slowly (doc/theory.md §3.2).
+     */
+    static constexpr double minimum_chi_scale = 1e-4;
+
   private:
+    /** The Newton tolerance of step k, and the one it shrinks to. */
+    double
+    inner_envelope(const unsigned int k) const;
+    double
+    final_inner_tolerance() const;
+
+    /**
+     * The last steps of `history` sit at the round-off floor of the inner
+     * solves: v no longer moves, the constraint holds, and the multiplier
+     * changes stay put (doc/theory.md §6).
+     */
+    bool
+    at_roundoff_floor(const std::vector<IterationRecord> &history,
+                      const bool                          friction) const;
+
+    /** The last three steps moved v and contracted by less than 30 % each. */
+    bool
+    contracts_slowly(const std::vector<IterationRecord> &history,
+                     const bool                          friction) const;
+
+    /** Which loop failed, its last changes, and the likely causes. */
+    std::string
+    non_convergence_message(const std::vector<IterationRecord> &history,
+                            const bool                          friction,
+                            const double chi_scale) const;
+
     const SolverParameters &parameters;
     NewtonSolver<dim>      &newton;
   };
