@@ -18,6 +18,7 @@
 #include <dualcontact/contact_functions.h>
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
+#include <dualcontact/plausibility.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/refinement.h>
 
@@ -47,7 +48,7 @@ namespace dualcontact
       , mapping(1)
       , fe(FE_Q<dim>(1), dim)
       , dof_handler(triangulation)
-      , elastic_solver(parameters.solver)
+      , elastic_solver(parameters.solver, parameters.material.poissons_ratio)
       , newton(parameters.solver, elastic_solver)
       , uzawa(parameters.solver, newton)
       , threshold_iteration(parameters.friction, uzawa)
@@ -76,14 +77,15 @@ namespace dualcontact
         report.start_cycle(result.mesh, result.transfer);
 
         assemble_system();
-        result.solve = solve();
+        result.solve    = solve();
+        result.position = check_position();
         if (scene.effects().contact)
           {
             result.zone = measure_contact_zone();
             result.cold = compare_with_cold_start();
           }
         result.errors    = postprocess();
-        result.reactions = compute_reactions();
+        result.reactions = compute_reactions(result.zone);
 
         output_results(cycle);
         report.end_cycle(result);
@@ -98,6 +100,7 @@ namespace dualcontact
     TimerOutput::Scope t(computing_timer, "make grid");
     scene.create_mesh(triangulation);
     scene.check_rigid_motions(triangulation);
+    check_initial_position(triangulation, scene);
   }
 
   template <int dim>
@@ -230,7 +233,8 @@ namespace dualcontact
                         constraints,
                         system_matrix,
                         system_rhs,
-                        contact ? &mass_matrix : nullptr);
+                        contact ? &mass_matrix : nullptr,
+                        &applied_load);
     // An expression may evaluate to NaN or infinity somewhere (sqrt of a
     // negative number, log of zero): stop here, naming the suspects, rather
     // than solve with it.
@@ -305,9 +309,11 @@ namespace dualcontact
     figures.chi               = chi;
     figures.n_contact_nodes   = contact_set.n_global_nodes();
     figures.n_hanging_contact = contact_set.n_hanging_nodes();
-    // the net load toward the foundation, which the contact force balances
-    // when nothing else holds the body in that direction
-    figures.normal_load = net_load(contact_set.normal);
+    // the applied load toward the foundation, which the contact force
+    // balances when nothing else holds the body in that direction (not
+    // b . n: b also holds the lifting of prescribed displacements)
+    for (unsigned int c = 0; c < dim; ++c)
+      figures.normal_load += applied_load[c] * contact_set.normal[c];
     return figures;
   }
 
@@ -455,6 +461,12 @@ namespace dualcontact
       tangential[k] = Utilities::MPI::sum(tangential[k], mpi_communicator);
     figures.tangential_force = tangential.norm();
     figures.max_pressure     = Utilities::MPI::max(peak, mpi_communicator);
+    // the force of the foundation on the body: -sum_s m_s (l1_s n + T l2_s)
+    Tensor<1, dim> resultant = -figures.contact_force * contact_set.normal;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      resultant -= tangential[k] * contact_set.tangents[k];
+    for (unsigned int c = 0; c < dim; ++c)
+      figures.resultant[c] = resultant[c];
 
     // the half-width along t, in 2D
     if (dim == 2)
@@ -544,15 +556,49 @@ namespace dualcontact
 
   template <int dim>
   ReactionFigures
-  ContactProblem<dim>::compute_reactions() const
+  ContactProblem<dim>::compute_reactions(const ContactZoneFigures &zone) const
   {
+    TimerOutput::Scope t(computing_timer, "postprocess");
     // one more pass over the cells: only where there are supports
+    ReactionFigures figures;
     if (scene.ids_with(BoundaryCondition::fixed).empty() &&
         scene.ids_with(BoundaryCondition::normal_fixed).empty())
-      return {};
-    TimerOutput::Scope t(computing_timer, "postprocess");
-    return dualcontact::compute_reactions(
-      mapping, dof_handler, scene, constraints, solution);
+      figures.applied_load = applied_load;
+    else
+      figures = dualcontact::compute_reactions(mapping,
+                                               dof_handler,
+                                               scene,
+                                               constraints,
+                                               hanging_node_constraints,
+                                               solution);
+
+    // Equilibrium of the whole body: contact force, reactions and applied
+    // loads sum to zero, up to the solver tolerances.
+    std::array<double, 3> sum   = figures.applied_load;
+    double                scale = std::sqrt(norm_square(figures.applied_load));
+    for (const auto &[id, force] : figures.on_id)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          sum[c] += force[c];
+        scale = std::max(scale, std::sqrt(norm_square(force)));
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      sum[c] += zone.resultant[c];
+    scale             = std::max(scale, std::sqrt(norm_square(zone.resultant)));
+    figures.imbalance = scale > 0. ? std::sqrt(norm_square(sum)) / scale : 0.;
+    return figures;
+  }
+
+  template <int dim>
+  PositionFigures
+  ContactProblem<dim>::check_position()
+  {
+    TimerOutput::Scope    t(computing_timer, "postprocess");
+    const PositionFigures figures =
+      check_deformed_position(dof_handler, solution, scene);
+    for (const std::string &warning : figures.warnings)
+      report.warn(warning);
+    return figures;
   }
 
   template <int dim>

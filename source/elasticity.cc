@@ -14,6 +14,9 @@
 #include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <iomanip>
+#include <sstream>
+
 namespace dualcontact
 {
   namespace
@@ -55,6 +58,14 @@ namespace dualcontact
           , traction_values(face_quadrature.size(), Vector<double>(dim))
           , traction_ids(scene.ids_with(BoundaryCondition::traction))
       {}
+
+      /** Add the resultant of the cell's loads `rhs` to `load`. */
+      void
+      add_resultant(std::array<double, 3> &load) const
+      {
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          load[fe.system_to_component_index(i).first] += rhs(i);
+      }
 
       /** Fill `matrix`, `rhs` and, with `with_mass`, `mass` for `cell`. */
       void
@@ -149,7 +160,8 @@ namespace dualcontact
                       const AffineConstraints<double> &constraints,
                       TrilinosWrappers::SparseMatrix  &system_matrix,
                       TrilinosWrappers::MPI::Vector   &system_rhs,
-                      TrilinosWrappers::SparseMatrix  *mass_matrix)
+                      TrilinosWrappers::SparseMatrix  *mass_matrix,
+                      std::array<double, 3>           *applied_load)
   {
     CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
     std::vector<types::global_dof_index> dof_indices(
@@ -158,10 +170,12 @@ namespace dualcontact
     system_rhs    = 0;
     if (mass_matrix != nullptr)
       *mass_matrix = 0;
+    std::array<double, 3> load{};
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           local.assemble(cell, mass_matrix != nullptr);
+          local.add_resultant(load);
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(
             local.matrix, local.rhs, dof_indices, system_matrix, system_rhs);
@@ -174,14 +188,19 @@ namespace dualcontact
     system_rhs.compress(VectorOperation::add);
     if (mass_matrix != nullptr)
       mass_matrix->compress(VectorOperation::add);
+    if (applied_load != nullptr)
+      for (unsigned int c = 0; c < 3; ++c)
+        (*applied_load)[c] = Utilities::MPI::sum(
+          load[c], dof_handler.get_triangulation().get_communicator());
   }
 
   template <int dim>
   ReactionFigures
-  compute_reactions(const Mapping<dim>                  &mapping,
-                    const DoFHandler<dim>               &dof_handler,
-                    const Scene<dim>                    &scene,
-                    const AffineConstraints<double>     &constraints,
+  compute_reactions(const Mapping<dim>              &mapping,
+                    const DoFHandler<dim>           &dof_handler,
+                    const Scene<dim>                &scene,
+                    const AffineConstraints<double> &constraints,
+                    const AffineConstraints<double> &hanging_node_constraints,
                     const TrilinosWrappers::MPI::Vector &solution)
   {
     // The residual of the unconstrained equations, R = A u - f, is zero at
@@ -208,14 +227,26 @@ namespace dualcontact
           r -= local.rhs;
           cell->get_dof_indices(dof_indices);
           residual.add(dof_indices, r);
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            load[local.fe.system_to_component_index(i).first] += local.rhs(i);
+          local.add_resultant(load);
         }
     residual.compress(VectorOperation::add);
     for (unsigned int c = 0; c < dim; ++c)
       figures.applied_load[c] = Utilities::MPI::sum(load[c], comm);
 
+    // The reaction of support id along e_c is R . w, w = 1 at the DoFs of
+    // component c the support constrains and 0 at the other DoFs that are
+    // not hanging; at a hanging DoF w interpolates its masters, so that w
+    // is a finite element function: R vanishes against every such function
+    // that is zero on the supports and the contact nodes (the equations),
+    // which makes the reactions, the contact force and the loads balance
+    // exactly. A DoF two supports constrain counts for the first ('fixed'
+    // before 'normal fixed', the order the constraints were made in).
     const IndexSet &owned = dof_handler.locally_owned_dofs();
+    IndexSet        relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    std::set<types::global_dof_index> claimed;
+    TrilinosWrappers::MPI::Vector     w(owned, comm),
+      w_ghosted(owned, relevant, comm);
     for (const BoundaryCondition condition :
          {BoundaryCondition::fixed, BoundaryCondition::normal_fixed})
       for (const types::boundary_id id : scene.ids_with(condition))
@@ -225,12 +256,28 @@ namespace dualcontact
             {
               ComponentMask mask(dim, false);
               mask.set(c, true);
-              const IndexSet dofs =
-                DoFTools::extract_boundary_dofs(dof_handler, mask, {id});
+              w = 0.;
+              for (const auto i :
+                   DoFTools::extract_boundary_dofs(dof_handler, mask, {id}))
+                if (owned.is_element(i) && constraints.is_constrained(i) &&
+                    !hanging_node_constraints.is_constrained(i) &&
+                    claimed.insert(i).second)
+                  w[i] = 1.;
+              w.compress(VectorOperation::insert);
+              w_ghosted  = w;
               double sum = 0.;
-              for (const auto i : dofs)
-                if (owned.is_element(i) && constraints.is_constrained(i))
-                  sum += residual[i];
+              for (const auto i : owned)
+                {
+                  double wi = w[i];
+                  if (const auto *entries =
+                        hanging_node_constraints.get_constraint_entries(i))
+                    {
+                      wi = 0.;
+                      for (const auto &[j, weight] : *entries)
+                        wi += weight * w_ghosted[j];
+                    }
+                  sum += wi * residual[i];
+                }
               reaction[c] = Utilities::MPI::sum(sum, comm);
             }
         }
@@ -285,8 +332,10 @@ namespace dualcontact
   }
 
   template <int dim>
-  ElasticSolver<dim>::ElasticSolver(const SolverParameters &parameters)
+  ElasticSolver<dim>::ElasticSolver(const SolverParameters &parameters,
+                                    const double            poisson_ratio)
       : parameters(parameters)
+      , poisson_ratio(poisson_ratio)
   {}
 
   template <int dim>
@@ -359,14 +408,35 @@ namespace dualcontact
       }
     catch (const SolverControl::NoConvergence &exc)
       {
-        AssertThrow(false,
-                    ExcMessage("CG did not converge in " +
-                               std::to_string(exc.last_step) +
-                               " iterations (residual " +
-                               format_number(exc.last_residual) + ", wanted " +
-                               format_number(relative * rhs_norm) +
-                               "). Raise <Solver/Maximum linear iterations> or "
-                               "check that the scene holds the body."));
+        // the likely causes, most likely first
+        std::vector<std::string> causes;
+        if (poisson_ratio > 0.499)
+          causes.push_back(
+            "a nearly incompressible material (<Material/Poisson's ratio> = " +
+            [this]() {
+              std::ostringstream nu;
+              nu << std::setprecision(10) << poisson_ratio;
+              return nu.str();
+            }() +
+            ", lambda/mu = " +
+            format_number(2. * poisson_ratio / (1. - 2. * poisson_ratio)) +
+            "): the displacement elements lock and the matrix is nearly "
+            "singular; nu <= 0.49 is what they can resolve");
+        causes.emplace_back(
+          "a body that the scene does not hold (a rigid motion that only the "
+          "contact or the proximal term stops): check the boundary "
+          "conditions");
+        causes.emplace_back("too few iterations allowed: raise <Solver/Maximum "
+                            "linear iterations>");
+        std::string text =
+          "CG did not converge in " + std::to_string(exc.last_step) +
+          " iterations (residual " + format_number(exc.last_residual) +
+          ", wanted " + format_number(relative * rhs_norm) +
+          "). Likely causes, most likely first: ";
+        for (std::size_t i = 0; i < causes.size(); ++i)
+          text +=
+            (i > 0 ? "; (" : "(") + std::to_string(i + 1) + ") " + causes[i];
+        AssertThrow(false, ExcMessage(text + "."));
       }
     return control.last_step();
   }
@@ -378,11 +448,13 @@ namespace dualcontact
                                          const AffineConstraints<double> &, \
                                          TrilinosWrappers::SparseMatrix &,  \
                                          TrilinosWrappers::MPI::Vector &,   \
-                                         TrilinosWrappers::SparseMatrix *); \
+                                         TrilinosWrappers::SparseMatrix *,  \
+                                         std::array<double, 3> *);          \
   template ReactionFigures compute_reactions<dim>(                                     \
     const Mapping<dim> &,                                                              \
     const DoFHandler<dim> &,                                                           \
     const Scene<dim> &,                                                                \
+    const AffineConstraints<double> &,                                                 \
     const AffineConstraints<double> &,                                                 \
     const TrilinosWrappers::MPI::Vector &);                                            \
   template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(                  \

@@ -377,14 +377,24 @@ namespace dualcontact
           }
         previous_status   = status;
         previous_gradient = gradient_norm;
-        AssertThrow(j < parameters.max_newton_steps,
-                    ExcMessage(
-                      "The Newton iteration did not converge in " +
-                      std::to_string(parameters.max_newton_steps) +
-                      " steps in Uzawa step " + std::to_string(uzawa_step) +
-                      " (relative gradient " + format_number(record.gradient) +
-                      ", wanted " + format_number(target / reference) +
-                      "). Raise <Solver/Maximum Newton steps>."));
+        AssertThrow(
+          j < parameters.max_newton_steps,
+          ExcMessage(
+            "The Newton iteration (loop 3) did not converge in " +
+            std::to_string(parameters.max_newton_steps) +
+            " steps in Uzawa step " + std::to_string(uzawa_step) +
+            " (relative gradient " + format_number(record.gradient) +
+            ", wanted " + format_number(target / reference) +
+            ", last step length " + format_number(previous_alpha) +
+            "). Likely causes, most likely first: " +
+            (previous_alpha < 0.1 ?
+               "(1) the contact and stick/slip statuses switch at every step "
+               "(short steps of the line search): lower <Solver/"
+               "Augmentation parameter>; (2) too few steps allowed: raise "
+               "<Solver/Maximum Newton steps>." :
+               "(1) too few steps allowed: raise <Solver/Maximum Newton "
+               "steps>; (2) a large <Solver/Augmentation parameter>, whose "
+               "contact terms make each step harder: lower it.")));
 
         // The Newton direction: H d = -grad, by CG with AMG, solved only as
         // accurately as the target needs (inexact Newton).

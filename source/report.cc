@@ -206,6 +206,14 @@ namespace dualcontact
 
   template <int dim>
   void
+  Report<dim>::warn(const std::string &text) const
+  {
+    if (pcout.is_active())
+      std::cerr << "dualcontact: warning: " << text << std::endl;
+  }
+
+  template <int dim>
+  void
   Report<dim>::note(const std::string &text)
   {
     pcout << "   " << text << std::endl;
@@ -231,7 +239,7 @@ namespace dualcontact
               << solve.n_active << " of " << solve.n_contact_nodes
               << " nodes in contact" << seconds(r.time.solve) << '\n'
               << std::setprecision(8) << "   total contact force "
-              << zone.contact_force << " (net load toward the foundation "
+              << zone.contact_force << " (applied load toward the foundation "
               << solve.normal_load << "), peak pressure " << zone.max_pressure
               << ", contact half-width " << zone.half_width << " (nodes), "
               << zone.edge_half_width << " (edges extrapolated)";
@@ -292,7 +300,10 @@ namespace dualcontact
         for (const auto &[id, f] : r.reactions.on_id)
           pcout << " id " << static_cast<unsigned int>(id) << " " << vector(f)
                 << ";";
-        pcout << " applied loads " << vector(r.reactions.applied_load) << '\n';
+        pcout << " applied loads " << vector(r.reactions.applied_load)
+              << "; imbalance " << std::scientific << std::setprecision(1)
+              << r.reactions.imbalance << " (relative)" << std::defaultfloat
+              << '\n';
       }
     pcout << std::scientific << std::setprecision(6)
           << "   ||u||_L2 = " << r.errors.u_l2;
@@ -335,6 +346,7 @@ namespace dualcontact
     t.add_value("uzawa_rate", r.solve.rate);
     t.add_value("l1_error_estimate", r.solve.estimated_l1_error);
     t.add_value("normal_load", r.solve.normal_load);
+    t.add_value("equilibrium_imbalance", r.reactions.imbalance);
     t.add_value("contact_force", r.zone.contact_force);
     t.add_value("tangential_force", r.zone.tangential_force);
     t.add_value("max_pressure", r.zone.max_pressure);

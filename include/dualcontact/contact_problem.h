@@ -114,12 +114,21 @@ namespace dualcontact
     compare_with_cold_start();
 
     /**
+     * The deformed body against the foundation and the small-strain model
+     * (plausibility.h): stops if a boundary without the contact condition
+     * passes through the foundation, warns if displacements are large.
+     */
+    PositionFigures
+    check_position();
+
+    /**
      * The reaction force of each 'fixed' and 'normal fixed' boundary id on
-     * the body, and the resultant of the applied loads (nothing, and no
-     * extra pass over the cells, in a scene without such ids).
+     * the body (no extra pass over the cells in a scene without such ids),
+     * the resultant of the applied loads, and how far the contact force
+     * `zone` measured, the reactions and the loads are from balancing.
      */
     ReactionFigures
-    compute_reactions() const;
+    compute_reactions(const ContactZoneFigures &zone) const;
 
     /** Norms of u and of its error against an exact solution. */
     ErrorNorms
@@ -254,9 +263,12 @@ namespace dualcontact
 
     // contact: the nodes and multipliers, the constants r and chi, and the
     // three loops (doc/theory.md §3)
-    ContactSet<dim>         contact_set;
-    double                  r                         = 0.;
-    double                  chi                       = 0.;
+    ContactSet<dim> contact_set;
+    double          r   = 0.;
+    double          chi = 0.;
+    // the resultant of the applied loads (tractions, body force), from the
+    // assembly
+    std::array<double, 3>   applied_load{};
     double                  held_by_friction_pressure = 0.;
     NewtonSolver<dim>       newton;
     UzawaIteration<dim>     uzawa;

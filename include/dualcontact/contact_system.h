@@ -79,8 +79,9 @@ namespace dualcontact
     double change_v        = 0.; // uzawa: |v_new - v| / |v_new|
     double violation       = 0.; // uzawa: max (v_n - g0)^+ / |v|_inf
     double complementarity = 0.; // uzawa: max l1 |g0 - v_n| / (max l1 |v|_inf)
-    double change_l2       = 0.; // uzawa: |l2_new - l2| / |l2_new|
-    double change_g        = 0.; // uzawa (merged) and threshold rows:
+    double change_l2       = 0.; // uzawa: |l2_new - l2| / max(|l2_new|,
+                                 // |l1_new|)
+    double change_g = 0.;        // uzawa (merged) and threshold rows:
                                  // |g_new - g| / |g_new|
     types::global_dof_index n_stick = 0;  // in contact and sticking
     types::global_dof_index n_slip  = 0;  // in contact and slipping

@@ -20,6 +20,7 @@
 
 #include <Epetra_MultiVector.h>
 
+#include <array>
 #include <memory>
 
 namespace dualcontact
@@ -32,7 +33,10 @@ namespace dualcontact
    * (hanging nodes, Dirichlet, sliders) applied. Loads the scene does not
    * have are not assembled. The matrix must already have its sparsity pattern.
    * If `mass_matrix` is given, the L2 mass matrix M (int u.v) is assembled
-   * into it in the same pass, with the same constraints.
+   * into it in the same pass, with the same constraints. If `applied_load`
+   * is given, it gets the resultant of the applied loads (int f + int T,
+   * summed over the ranks), without the lifting of prescribed
+   * displacements that b holds.
    */
   template <int dim>
   void
@@ -42,22 +46,26 @@ namespace dualcontact
                       const AffineConstraints<double> &constraints,
                       TrilinosWrappers::SparseMatrix  &system_matrix,
                       TrilinosWrappers::MPI::Vector   &system_rhs,
-                      TrilinosWrappers::SparseMatrix  *mass_matrix = nullptr);
+                      TrilinosWrappers::SparseMatrix  *mass_matrix  = nullptr,
+                      std::array<double, 3>           *applied_load = nullptr);
 
   /**
    * The reaction forces on the body from its supports: at every 'fixed' and
-   * 'normal fixed' boundary id, the sum over that boundary's DoFs of the
-   * residual A u - f of the unconstrained equations at the DoFs that
-   * `constraints` constrain (at the free ones it is zero, or a contact
-   * force); and the resultant of the applied loads f. `solution` is
+   * 'normal fixed' boundary id, the residual A u - f of the unconstrained
+   * equations summed over the DoFs that `constraints` constrain there, with
+   * the hanging DoFs of `hanging_node_constraints` weighted by how much of
+   * them their masters on that boundary carry (so that reactions, contact
+   * force and loads balance exactly); a DoF two supports share counts for
+   * the first. Also the resultant of the applied loads f. `solution` is
    * ghosted.
    */
   template <int dim>
   ReactionFigures
-  compute_reactions(const Mapping<dim>                  &mapping,
-                    const DoFHandler<dim>               &dof_handler,
-                    const Scene<dim>                    &scene,
-                    const AffineConstraints<double>     &constraints,
+  compute_reactions(const Mapping<dim>              &mapping,
+                    const DoFHandler<dim>           &dof_handler,
+                    const Scene<dim>                &scene,
+                    const AffineConstraints<double> &constraints,
+                    const AffineConstraints<double> &hanging_node_constraints,
                     const TrilinosWrappers::MPI::Vector &solution);
 
   /**
@@ -84,7 +92,12 @@ namespace dualcontact
   class ElasticSolver
   {
   public:
-    explicit ElasticSolver(const SolverParameters &parameters);
+    /**
+     * `poisson_ratio` only for the message when CG fails: near 1/2 the
+     * material locks and the matrix is ill-conditioned.
+     */
+    explicit ElasticSolver(const SolverParameters &parameters,
+                           const double            poisson_ratio = 0.3);
 
     /**
      * Compute the rigid-body modes handed to the AMG as near-null space;
@@ -120,6 +133,7 @@ namespace dualcontact
 
   private:
     const SolverParameters                            &parameters;
+    const double                                       poisson_ratio;
     bool                                               higher_order = false;
     std::unique_ptr<Epetra_MultiVector>                modes;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> preconditioner;

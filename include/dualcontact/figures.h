@@ -9,6 +9,8 @@
 
 #include <array>
 #include <map>
+#include <string>
+#include <vector>
 
 namespace dualcontact
 {
@@ -45,8 +47,8 @@ namespace dualcontact
     types::global_dof_index n_hanging_contact = 0;  // on Gamma_C, all ranks
     double                  r                 = 0.; // augmentation used
     double                  chi               = 0.; // proximal weight used
-    // the net load toward the foundation (includes the lifting of
-    // prescribed displacements)
+    // the applied load toward the foundation (tractions and body force;
+    // not the lifting of prescribed displacements)
     double normal_load = 0.;
     // Solver/Time a reference linear solve: AMG set-up + CG of one solve
     double       time_reference       = 0.;
@@ -56,12 +58,14 @@ namespace dualcontact
   /** measure_contact_zone(): the contact zone at convergence. */
   struct ContactZoneFigures
   {
-    double contact_force    = 0.; // sum_s m_s l1_s
-    double tangential_force = 0.; // |sum_s m_s l2_s|
-    double max_pressure     = 0.; // max_s l1_s
-    double half_width       = 0.; // 2D: half the extent of the active nodes
-    double edge_half_width  = 0.; // 2D: the same, edges extrapolated
-    double pressure_error   = 0.; // relative L2 on Gamma_C (exact known)
+    double contact_force = 0.; // sum_s m_s l1_s
+    // the force of the foundation on the body, a vector
+    std::array<double, 3> resultant{};
+    double                tangential_force = 0.; // |sum_s m_s l2_s|
+    double                max_pressure     = 0.; // max_s l1_s
+    double half_width      = 0.; // 2D: half the extent of the active nodes
+    double edge_half_width = 0.; // 2D: the same, edges extrapolated
+    double pressure_error  = 0.; // relative L2 on Gamma_C (exact known)
     // relative errors against <Exact solution/Contact half-width> and
     // <Peak pressure> (0 where not known)
     double half_width_error    = 0.;
@@ -87,6 +91,13 @@ namespace dualcontact
     double h1_semi = 0.; // |u - u_exact|_H1
   };
 
+  /** |f|^2 of a force given by its components (unused ones zero). */
+  inline double
+  norm_square(const std::array<double, 3> &f)
+  {
+    return f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+  }
+
   /**
    * compute_reactions(): the force each support ('fixed', 'normal fixed'
    * boundary id) exerts on the body, and the resultant of the applied loads
@@ -98,6 +109,23 @@ namespace dualcontact
   {
     std::map<types::boundary_id, std::array<double, 3>> on_id;
     std::array<double, 3>                               applied_load{};
+    // |contact force + reactions + applied loads| / the largest of them:
+    // the equilibrium of the whole body (0 when it holds exactly)
+    double imbalance = 0.;
+  };
+
+  /** What check_deformed_position() (plausibility.h) found. */
+  struct PositionFigures
+  {
+    double max_displacement = 0.; // max |u| over the vertices
+    // the deepest point of a boundary without the contact condition below
+    // the foundation plane (0: none below it), and its boundary id
+    double             penetration    = 0.;
+    types::boundary_id penetrating_id = 0;
+    // the smallest initial gap of the contact boundary's vertices
+    double min_initial_gap = 0.;
+    // one line each, for the log: what is implausible but not wrong
+    std::vector<std::string> warnings;
   };
 
   /** Wall times of the phases of one cycle [s], from the TimerOutput. */
@@ -121,6 +149,7 @@ namespace dualcontact
     ColdStartFigures   cold;
     ErrorNorms         errors;
     ReactionFigures    reactions;
+    PositionFigures    position;
     PhaseTimes         time;
     double             memory_mb = 0.; // peak resident memory, all ranks
   };

@@ -74,6 +74,10 @@ namespace dualcontact
     void
     note(const std::string &text) override;
 
+    /** A warning: on rank 0, "dualcontact: warning: ..." on stderr. */
+    void
+    warn(const std::string &text) const;
+
     /**
      * The cycle is done: fill its times from the timer and the peak memory,
      * print its figures, add it to the tables and (re)write cycles.csv and

@@ -165,3 +165,118 @@ TEST_CASE("Half disc pressed by a prescribed depth converges on every mesh",
       CHECK(std::abs(reaction[0]) <= 1e-8 * run.last().zone.contact_force);
     }
 }
+
+namespace
+{
+  /**
+   * The prescribed-displacement version of a shipped scene: the boundary
+   * that carries its load is pushed by a displacement instead (other
+   * tractions stay), with the given friction law and Poisson's ratio, on
+   * three meshes.
+   */
+  struct DrivenScene
+  {
+    std::string        file;
+    std::string        conditions; // the new <Boundary conditions/Conditions>
+    std::string        displacements; // ... <Displacements>
+    std::string        tractions;     // ... <Tractions> (what is left of them)
+    types::boundary_id pushed;        // the id whose reaction is measured
+  };
+
+  const std::vector<DrivenScene> driven_scenes = {
+    {"hertz.prm", "0: contact, 1: fixed", "1: 0; -0.01", "", 1},
+    {"hertz_adaptive.prm", "0: contact, 1: fixed", "1: 0; -0.005", "", 1},
+    {"hertz_friction.prm", "0: contact, 1: fixed", "1: 0; -0.01", "", 1},
+    {"paper_block.prm",
+     "0: traction, 1: contact, 2: normal fixed, 3: fixed",
+     "3: 0.001; -0.005",
+     "0: 20; 0",
+     3},
+    {"patch.prm",
+     "0: normal fixed, 2: contact, 3: fixed",
+     "3: 0; -0.005",
+     "",
+     3},
+    {"sliding_block.prm", "2: contact, 3: fixed", "3: 0.002; -0.005", "", 3}};
+
+  std::string
+  driven(const DrivenScene &scene, const double nu, const std::string &law)
+  {
+    return "subsection Boundary conditions\n"
+           "  set Conditions = " +
+           scene.conditions + "\n  set Displacements = " + scene.displacements +
+           "\n  set Tractions = " + scene.tractions +
+           "\nend\n"
+           "subsection Material\n"
+           "  set Poisson's ratio = " +
+           std::to_string(nu) +
+           "\nend\n"
+           "subsection Friction\n"
+           "  set Law = " +
+           law + "\n  set Coefficient = " + (law == "none" ? "0" : "0.3") +
+           "\nend\n"
+           "subsection Refinement\n"
+           "  set Number of cycles = 3\n"
+           "end\n";
+  }
+} // namespace
+
+TEST_CASE("The prescribed-displacement version of every shipped scene "
+          "converges on every mesh, frictionless and with Coulomb friction, "
+          "for nu from 0 to 0.49",
+          "[robustness][displacement][sweep]")
+{
+  for (const DrivenScene &scene : driven_scenes)
+    for (const std::string law : {"none", "coulomb"})
+      for (const double nu : {0., 0.3, 0.49})
+        {
+          INFO(scene.file << ", " << law << ", nu = " << nu);
+          const Run run(scene.file, driven(scene, nu, law));
+          REQUIRE(run.problem->results().size() == 3);
+          for (const CycleResult &r : run.problem->results())
+            {
+              INFO("cycle " << r.mesh.cycle << ": " << r.solve.uzawa_steps
+                            << " Uzawa steps, floor "
+                            << r.solve.at_roundoff_floor);
+              CHECK(r.solve.uzawa_steps <= 30);
+              CHECK(r.zone.contact_force > 0.);
+              // contact force + reactions + applied loads = 0
+              CHECK(r.reactions.imbalance <= 1e-6);
+            }
+          check_solution(run, law == "coulomb" ? 0.3 : 0.);
+        }
+}
+
+TEST_CASE("A tolerance below the round-off floor of the inner solves ends "
+          "at that floor, reported as convergence",
+          "[robustness][floor]")
+{
+  // was: exit 1 after 500 Uzawa steps, the multiplier changes stalled at
+  // 3e-14 to 3e-13 while the Newton iteration took no step
+  const Run          run("hertz.prm",
+                "subsection Solver\n"
+                         "  set Uzawa tolerance = 1e-15\n"
+                         "end\n"
+                         "subsection Refinement\n"
+                         "  set Number of cycles = 1\n"
+                         "end\n");
+  const CycleResult &r = run.last();
+  INFO(r.solve.uzawa_steps << " Uzawa steps");
+  CHECK(r.solve.at_roundoff_floor);
+  CHECK(r.solve.uzawa_steps < 100);
+  const Conditions c = check_conditions(run);
+  CHECK(c.penetration <= 1e-12);
+  CHECK(c.complementarity <= 1e-12);
+  CHECK(std::abs(r.zone.contact_force - r.solve.normal_load) <=
+        1e-10 * r.solve.normal_load);
+  if (Utilities::MPI::this_mpi_process(run.comm) == 0) // rank 0 prints
+    CHECK(run.screen.str().find("converged at the round-off floor") !=
+          std::string::npos);
+
+  // at the default tolerance the iteration meets it: no floor
+  const Run normal("hertz.prm",
+                   "subsection Refinement\n"
+                   "  set Number of cycles = 1\n"
+                   "end\n");
+  CHECK_FALSE(normal.last().solve.at_roundoff_floor);
+}

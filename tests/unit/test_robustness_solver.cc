@@ -697,7 +697,7 @@ TEST_CASE(
                                      "  set Maximum threshold steps = 2"));
   INFO(nested.error);
   CHECK(!nested.run);
-  CHECK(nested.error.find("The threshold iteration did not "
+  CHECK(nested.error.find("The threshold iteration (loop 1) did not "
                           "converge in 2 steps") != std::string::npos);
   CHECK(nested.error.find("<Friction/Maximum threshold steps>") !=
         std::string::npos);

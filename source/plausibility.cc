@@ -1,0 +1,215 @@
+#include <deal.II/base/mpi.h>
+
+#include <dualcontact/input_error.h>
+#include <dualcontact/plausibility.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <iomanip>
+#include <sstream>
+
+namespace dualcontact
+{
+  namespace
+  {
+    // "id 2 ('contact')"
+    std::string
+    describe(const types::boundary_id id, const BoundaryCondition condition)
+    {
+      return "boundary id " + std::to_string(id) + " ('" +
+             to_string(condition) + "')";
+    }
+
+    // x with three significant digits, not in scientific notation: 50.2
+    std::string
+    plain(const double x)
+    {
+      std::ostringstream out;
+      out << std::setprecision(3) << x;
+      return out.str();
+    }
+
+    // The entries that place the foundation, for messages.
+    const std::string foundation_entries =
+      "<Foundation/Point> and <Foundation/Normal>";
+  } // namespace
+
+  template <int dim>
+  void
+  check_initial_position(const Triangulation<dim> &triangulation,
+                         const Scene<dim>         &scene)
+  {
+    if (!scene.effects().contact)
+      return;
+    const double tolerance = 1e-8 * scene.characteristic_length();
+    // the extreme signed distances of all vertices and of the contact
+    // boundary's vertices from the plane (> 0 on the body's side)
+    double highest = -std::numeric_limits<double>::max();
+    double lowest_contact = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          for (const unsigned int v : cell->vertex_indices())
+            highest = std::max(highest, scene.initial_gap(cell->vertex(v)));
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                scene.parameters.boundary.condition(face->boundary_id()) ==
+                  BoundaryCondition::contact)
+              for (const unsigned int v : face->vertex_indices())
+                lowest_contact =
+                  std::min(lowest_contact, scene.initial_gap(face->vertex(v)));
+        }
+    const MPI_Comm comm = triangulation.get_communicator();
+    highest             = Utilities::MPI::max(highest, comm);
+    lowest_contact      = Utilities::MPI::min(lowest_contact, comm);
+
+    if (highest < tolerance)
+      throw InputError(
+        "The whole body lies behind the foundation plane: the foundation "
+        "normal points away from the body (" +
+          foundation_entries +
+          "). It must point from the foundation into the body; reverse "
+          "<Foundation/Normal>.",
+        exit_inconsistent);
+    if (lowest_contact < -tolerance)
+      throw InputError("The body starts inside the foundation: part of its "
+                       "contact boundary lies " +
+                         format_number(-lowest_contact) +
+                         " behind the foundation plane (" + foundation_entries +
+                         "). Move the plane to the body's surface or beyond "
+                         "it.",
+                       exit_inconsistent);
+  }
+
+  template <int dim>
+  PositionFigures
+  check_deformed_position(const DoFHandler<dim>               &dof_handler,
+                          const TrilinosWrappers::MPI::Vector &solution,
+                          const Scene<dim>                    &scene)
+  {
+    PositionFigures figures;
+    const double    length = scene.characteristic_length();
+    double          max_u = 0., deepest = 0.;
+    double          lowest_contact = std::numeric_limits<double>::max();
+    unsigned int    deepest_id     = 0;
+    const bool      contact        = scene.effects().contact;
+    const auto      on_contact     = [&scene](const types::boundary_id id) {
+      return scene.parameters.boundary.condition(id) ==
+             BoundaryCondition::contact;
+    };
+    // the vertices of the contact boundary (also those a ghost cell sees):
+    // they are kept out of the foundation by the contact conditions, up to
+    // the tolerance, and are not checked again
+    std::vector<bool> contact_vertex(
+      dof_handler.get_triangulation().n_vertices(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && on_contact(face->boundary_id()))
+            for (const unsigned int v : face->vertex_indices())
+              contact_vertex[face->vertex_index(v)] = true;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              Tensor<1, dim> u;
+              for (unsigned int c = 0; c < dim; ++c)
+                u[c] = solution[cell->vertex_dof_index(v, c)];
+              max_u = std::max(max_u, u.norm());
+            }
+          if (!contact)
+            continue;
+          for (const auto &face : cell->face_iterators())
+            {
+              if (!face->at_boundary())
+                continue;
+              const types::boundary_id id = face->boundary_id();
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  const Point<dim> x = face->vertex(v);
+                  if (contact_vertex[face->vertex_index(v)])
+                    {
+                      lowest_contact =
+                        std::min(lowest_contact, scene.initial_gap(x));
+                      continue;
+                    }
+                  Point<dim> deformed = x;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    deformed[c] += solution[face->vertex_dof_index(v, c)];
+                  const double depth = -scene.initial_gap(deformed);
+                  if (depth > deepest)
+                    {
+                      deepest    = depth;
+                      deepest_id = id;
+                    }
+                }
+            }
+        }
+    const MPI_Comm comm =
+      dof_handler.get_triangulation().get_communicator();
+    figures.max_displacement = Utilities::MPI::max(max_u, comm);
+    figures.min_initial_gap  = Utilities::MPI::min(lowest_contact, comm);
+    // the deepest point and its id, over the ranks
+    const double global_deepest = Utilities::MPI::max(deepest, comm);
+    figures.penetration         = global_deepest;
+    figures.penetrating_id      = Utilities::MPI::min(
+      deepest == global_deepest && deepest > 0. ?
+        deepest_id :
+        std::numeric_limits<unsigned int>::max(),
+      comm);
+
+    if (contact && figures.penetration > 1e-8 * length)
+      {
+        const std::string text =
+          describe(figures.penetrating_id,
+                   scene.parameters.boundary.condition(figures.penetrating_id)) +
+          " passes through the foundation by " +
+          format_number(figures.penetration) + " (" +
+          plain(100. * figures.penetration / length) +
+          " % of the body's size): only boundaries with the condition "
+          "'contact' are kept out of it";
+        if (figures.penetration > 1e-3 * length)
+          throw InputError("The solution is not physical: " + text +
+                             ". Give that boundary the condition 'contact' "
+                             "(<Boundary conditions/Conditions>), or check "
+                             "which face touches the foundation (" +
+                             foundation_entries + ").",
+                           exit_inconsistent);
+        figures.warnings.push_back(text + " (less than 0.1 % of its size).");
+      }
+    if (figures.max_displacement > 0.05 * length)
+      {
+        std::ostringstream text;
+        text << "the displacements reach "
+             << format_number(figures.max_displacement) << ", "
+             << plain(100. * figures.max_displacement / length)
+             << " % of the body's size " << plain(length)
+             << ": the model is linear (small displacements and strains), "
+                "so the result is not physical there";
+        if (contact && figures.min_initial_gap > 0.05 * length)
+          text << "; the contact boundary starts "
+               << plain(figures.min_initial_gap)
+               << " from the foundation, and the body moves that far to "
+                  "reach it ("
+               << foundation_entries << ")";
+        text << ".";
+        figures.warnings.push_back(text.str());
+      }
+    return figures;
+  }
+
+  template void
+  check_initial_position<2>(const Triangulation<2> &, const Scene<2> &);
+  template void
+  check_initial_position<3>(const Triangulation<3> &, const Scene<3> &);
+  template PositionFigures
+  check_deformed_position<2>(const DoFHandler<2> &,
+                             const TrilinosWrappers::MPI::Vector &,
+                             const Scene<2> &);
+  template PositionFigures
+  check_deformed_position<3>(const DoFHandler<3> &,
+                             const TrilinosWrappers::MPI::Vector &,
+                             const Scene<3> &);
+} // namespace dualcontact
