@@ -74,8 +74,7 @@ namespace
       problem.run();
     }
     remove_directory(directory, MPI_COMM_WORLD);
-    return lines_of(
-      Utilities::MPI::broadcast(MPI_COMM_WORLD, screen.str(), 0));
+    return lines_of(Utilities::MPI::broadcast(MPI_COMM_WORLD, screen.str(), 0));
   }
 
   std::size_t
@@ -128,8 +127,9 @@ namespace
         CHECK(std::stoul(rows[cycle]) == cycle);
       }
     // nothing of the loops
-    CHECK(count_matching(lines, std::regex("Uzawa +[0-9]+ |Newton +[0-9]+:|"
-                                           "^Cycle |^Legend")) == 0);
+    CHECK(count_matching(lines,
+                         std::regex("Uzawa +[0-9]+ |Newton +[0-9]+:|"
+                                    "^Cycle |^Legend")) == 0);
   }
 
   /** The lines of the legend, from its title to the first cycle. */
@@ -139,9 +139,9 @@ namespace
     const auto first = std::find_if(lines.begin(), lines.end(), [](auto &l) {
       return l.rfind("Legend", 0) == 0;
     });
-    return std::find_if(first, lines.end(), [](auto &l) {
-             return l.rfind("Cycle 0:", 0) == 0;
-           }) -
+    return std::find_if(first,
+                        lines.end(),
+                        [](auto &l) { return l.rfind("Cycle 0:", 0) == 0; }) -
            first;
   }
 
@@ -158,8 +158,7 @@ namespace
     for (const auto *lines : {&normal, &detailed})
       {
         CHECK(count_matching(*lines, std::regex("^Legend")) == 1);
-        CHECK(count_matching(*lines, std::regex("^  d\\(x\\) +relative")) ==
-              1);
+        CHECK(count_matching(*lines, std::regex("^  d\\(x\\) +relative")) == 1);
       }
     CHECK(count_matching(normal, uzawa_row) > 0);
     CHECK(count_matching(normal, uzawa_row) ==
@@ -202,19 +201,17 @@ TEST_CASE("Screen log at each verbosity: 3D Coulomb friction, nested "
   check_levels<3>(read_text(test_file("prm/hertz_ball_friction.prm")), 2);
 }
 
-TEST_CASE("quiet shows warnings, not notes; long ones are wrapped",
-          "[report]")
+TEST_CASE("quiet shows warnings, not notes; long ones are wrapped", "[report]")
 {
   Parameters parameters;
-  parameters.read_string(paper_block_two_cycles +
-                         output("unused", "quiet"));
+  parameters.read_string(paper_block_two_cycles + output("unused", "quiet"));
   const Scene<2>     scene(parameters);
   std::ostringstream discarded, screen;
   const TimerOutput  timer(MPI_COMM_WORLD,
                           discarded,
                           TimerOutput::never,
                           TimerOutput::wall_times);
-  Report<2> report(parameters, scene, timer, MPI_COMM_WORLD, screen);
+  Report<2>          report(parameters, scene, timer, MPI_COMM_WORLD, screen);
   report.note("threshold iteration: a note");
   std::string long_warning = "the displacements exceed 10 % of the body size";
   for (unsigned int i = 0; i < 6; ++i)
