@@ -597,7 +597,7 @@ namespace dualcontact
     const PositionFigures figures =
       check_deformed_position(dof_handler, solution, scene);
     for (const std::string &warning : figures.warnings)
-      report.warn(warning);
+      report.warning(warning);
     return figures;
   }
 

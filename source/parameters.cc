@@ -822,6 +822,16 @@ namespace dualcontact
                       Patterns::Bool(),
                       "Print wall times on screen. Tests switch this off so "
                       "that the screen output is deterministic.");
+    prm.declare_entry(
+      "Verbosity",
+      "normal",
+      Patterns::Selection("quiet|normal|detailed"),
+      "How much the screen shows (no unit). quiet: the scene and one line "
+      "per refinement cycle, then the summary table; normal: also a legend, "
+      "one line per Uzawa step and per threshold step, and each cycle's "
+      "results; detailed: also one line per Newton step with its CG "
+      "iterations. Warnings and errors are always shown; cycles.csv and "
+      "iterations.csv hold everything at every level.");
     prm.leave_subsection();
   }
 
@@ -829,9 +839,13 @@ namespace dualcontact
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory    = prm.get("Directory");
-    write_vtu    = prm.get_bool("Write vtu");
-    print_timing = prm.get_bool("Print timing");
+    directory               = prm.get("Directory");
+    write_vtu               = prm.get_bool("Write vtu");
+    print_timing            = prm.get_bool("Print timing");
+    const std::string level = prm.get("Verbosity");
+    verbosity               = level == "quiet"    ? Verbosity::quiet :
+                              level == "detailed" ? Verbosity::detailed :
+                                                    Verbosity::normal;
     prm.leave_subsection();
     if (directory.empty())
       throw InputError("The entry <Output/Directory> must not be empty.",

@@ -49,10 +49,11 @@
 # (1) Everything except the per-iteration residual figures, with
 #     r = TOLERANCE_RELATIVE (default 1e-5), a = TOLERANCE_ABSOLUTE (default
 #     1e-9). The residual figures are the 3-digit numbers like 2.38e-05 on the
-#     lines that match NOISY_LINES (default: dualcontact's "   Uzawa   <k>:",
-#     "   loop 1, step" / "   threshold step" and "   Uzawa contraction
-#     rate" lines); both files
-#     are compared with those figures replaced by '~'. All integers on those
+#     lines that match NOISY_LINES (default: the rows of dualcontact's
+#     Uzawa table, "   Uzawa   <k> ...", and step-1's own "   Uzawa   <k>:"
+#     lines; "   threshold step", "   Uzawa contraction rate" and, at
+#     Output/Verbosity = detailed, "      Newton <j>:"); both files are
+#     compared with those figures replaced by '~'. All integers on those
 #     lines (Newton, CG, active, stick/slip) stay in this comparison.
 #       - Iteration counts (Uzawa, Newton, CG, loop 1 steps, AMG set-ups,
 #         nodes in contact, stick/slip) are integers below a few thousand:
@@ -106,8 +107,7 @@ if(NOT DEFINED TOLERANCE_ABSOLUTE OR "${TOLERANCE_ABSOLUTE}" STREQUAL "")
   set(TOLERANCE_ABSOLUTE 1e-9)
 endif()
 if(NOT DEFINED NOISY_LINES OR "${NOISY_LINES}" STREQUAL "")
-  # ("   threshold step" is how the refactored report prints loop 1's steps)
-  set(NOISY_LINES "   Uzawa +[0-9]+:|   threshold step|   Uzawa contraction rate")
+  set(NOISY_LINES "   Uzawa +[0-9]+[: ]|   threshold step|   Uzawa contraction rate|      Newton +[0-9]+:")
 endif()
 set(_noisy_relative 1)
 set(_noisy_absolute 1e-8)

@@ -120,7 +120,8 @@ namespace dualcontact
   /**
    * Told of every step of every loop, and of the few things a loop has to
    * say (which g^0 the threshold iteration starts from, a round-off floor
-   * the Newton iteration accepted). Every method does nothing by default.
+   * the Newton iteration accepted). Every method does nothing by default;
+   * a warning is a note unless the observer tells them apart.
    */
   class IterationObserver
   {
@@ -143,6 +144,13 @@ namespace dualcontact
     virtual void
     note(const std::string &)
     {}
+
+    /** Something the user must see, whatever the verbosity. */
+    virtual void
+    warning(const std::string &text)
+    {
+      note(text);
+    }
   };
 } // namespace dualcontact
 

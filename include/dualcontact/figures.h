@@ -137,6 +137,7 @@ namespace dualcontact
     double solve    = 0.;
     double output   = 0.;
     double total    = 0.; // all phases of all cycles up to here
+    double cycle    = 0.; // all phases of this cycle (screen only)
   };
 
   /** One refinement cycle: one row of the cycle table. */

@@ -210,12 +210,21 @@ namespace dualcontact
     parse_parameters(ParameterHandler &prm);
   };
 
+  /** How much of a run the screen shows (the CSV files get everything). */
+  enum class Verbosity
+  {
+    quiet,   // the scene, one line per cycle, the summary
+    normal,  // and one line per Uzawa and threshold step, the cycle's results
+    detailed // and one line per Newton step
+  };
+
   /** What is written where. */
   struct OutputParameters
   {
     std::string directory    = "output";
     bool        write_vtu    = true;
     bool        print_timing = true;
+    Verbosity   verbosity    = Verbosity::normal;
 
     static void
     declare_parameters(ParameterHandler &prm);

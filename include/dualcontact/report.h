@@ -2,6 +2,12 @@
 // cycles and iterations, and their CSV files. The Problem class hands it
 // the figures each phase returns; the three loops report their steps to it
 // as an IterationObserver. Nothing else prints.
+//
+// <Output/Verbosity> sets how much of it the screen shows: quiet, the scene
+// and one table row per cycle; normal, also a legend, the Uzawa and
+// threshold steps and each cycle's results; detailed, also the Newton steps.
+// No screen line is longer than 120 characters; warnings are always shown;
+// the CSV files hold everything at every level.
 #ifndef dualcontact_report_h
 #define dualcontact_report_h
 
@@ -47,7 +53,10 @@ namespace dualcontact
     void
     print_scene() const;
 
-    /** A new mesh: its size, and how it was made (after set-up). */
+    /**
+     * A new mesh: its size, and how it was made (after set-up). Before the
+     * first, the legend.
+     */
     void
     start_cycle(const MeshFigures &mesh, const TransferFigures &transfer);
 
@@ -61,8 +70,9 @@ namespace dualcontact
     void
     end_cold_start() const;
 
-    // The loops' steps (IterationObserver). Uzawa and threshold steps are
-    // printed, Newton steps only logged; notes are printed.
+    // The loops' steps (IterationObserver), all logged for iterations.csv.
+    // Printed: Uzawa and threshold steps and notes from normal on, Newton
+    // steps at detailed, warnings always.
     void
     newton_step(const IterationRecord &record) override;
     void
@@ -73,10 +83,9 @@ namespace dualcontact
     threshold_step(const IterationRecord &record) override;
     void
     note(const std::string &text) override;
-
-    /** A warning: on rank 0, "dualcontact: warning: ..." on stderr. */
     void
-    warn(const std::string &text) const;
+    warning(const std::string &text) override;
+
 
     /**
      * The cycle is done: fill its times from the timer and the peak memory,
@@ -103,16 +112,39 @@ namespace dualcontact
     }
 
   private:
+    /** Whether the screen shows what `level` adds. */
+    bool
+    shows(const Verbosity level) const;
+
     /** " (1.234 s)" if timing is printed, else nothing. */
     std::string
     seconds(const double t) const;
+
+    /** The column header of the Uzawa rows, once per Uzawa solve. */
+    void
+    print_uzawa_header(const unsigned int uzawa_step);
+
+    /** The abbreviations of this scene's log, once (normal, detailed). */
+    void
+    print_legend() const;
 
     /** Wall time of a TimerOutput section since the last end_cycle(). */
     double
     phase_time(const std::string &section) const;
 
+    /** quiet: the cycle's row (the first under the table's header). */
+    void
+    print_cycle_row(const CycleResult &result) const;
+
+    /** normal, detailed: the cycle's results, a few lines. */
     void
     print_cycle(const CycleResult &result) const;
+
+    void
+    print_contact_results(const CycleResult &result) const;
+
+    void
+    print_reactions(const ReactionFigures &reactions) const;
 
     void
     add_table_rows(const CycleResult &result);
@@ -128,6 +160,11 @@ namespace dualcontact
 
     // the timer's section totals at the end of the previous cycle
     std::map<std::string, double> previous_totals;
+
+    // the Uzawa rows' column header: shown in this contact solve, and the
+    // step of the last row printed under it
+    bool         uzawa_header_shown = false;
+    unsigned int last_uzawa_row     = 0;
 
     std::vector<CycleResult>     cycle_results;
     std::vector<IterationRecord> iteration_log;
