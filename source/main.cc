@@ -56,8 +56,9 @@ namespace
     "                      default value and help text (units in brackets)\n"
     "\n"
     "Exit status: 0 success, 1 solver failure, 2 wrong command line,\n"
-    "3 parameter file unreadable, 4 unknown entry or malformed line,\n"
-    "5 invalid value, 6 inconsistent scene, 7 load the foundation cannot hold.\n";
+    "3 parameter file unreadable, 4 unknown entry, malformed line or entry\n"
+    "set twice, 5 invalid value, 6 inconsistent scene, 7 load the\n"
+    "foundation cannot hold.\n";
 } // namespace
 
 int
@@ -93,6 +94,9 @@ main(int argc, char *argv[])
     {
       Parameters parameters;
       parameters.read_file(args[0]);
+      if (root)
+        for (const std::string &warning : parameters.ineffective_entries())
+          std::cerr << "dualcontact: warning: " << warning << std::endl;
       if (parameters.geometry.dimension == 2)
         run_scene<2>(parameters);
       else
