@@ -18,29 +18,31 @@
 namespace
 {
   /**
-   * Run one scene. Bad input found inside run() is caught while the problem
+   * Run one scene. Any exception from run() is caught while the problem
    * still exists and rethrown after it is gone: the problem's objects then
-   * finish normally (every rank throws the same InputError together) instead
-   * of during stack unwinding, where deal.II would warn about MPI.
+   * finish normally (every rank throws the same InputError together)
+   * instead of during stack unwinding, where deal.II would warn about MPI
+   * and TimerOutput would print its notice about an uncaught exception in
+   * front of the error message.
    */
   template <int dim>
   void
   run_scene(const dualcontact::Parameters &parameters)
   {
-    std::exception_ptr input_error;
+    std::exception_ptr error;
     {
       dualcontact::ContactProblem<dim> problem(parameters);
       try
         {
           problem.run();
         }
-      catch (const dualcontact::InputError &)
+      catch (...)
         {
-          input_error = std::current_exception();
+          error = std::current_exception();
         }
     }
-    if (input_error)
-      std::rethrow_exception(input_error);
+    if (error)
+      std::rethrow_exception(error);
   }
 
   const char *const usage =
@@ -57,8 +59,9 @@ namespace
     "\n"
     "Exit status: 0 success, 1 solver failure, 2 wrong command line,\n"
     "3 parameter file unreadable, 4 unknown entry, malformed line or entry\n"
-    "set twice, 5 invalid value, 6 inconsistent scene, 7 load the\n"
-    "foundation cannot hold.\n";
+    "set twice, 5 invalid value (or an output folder that cannot be made),\n"
+    "6 inconsistent scene (or a mesh too large for the machine's memory),\n"
+    "7 load the foundation cannot hold.\n";
 } // namespace
 
 int

@@ -62,7 +62,11 @@ namespace dualcontact
 
     // ---------------------------------------------------------- the phases
 
-    /** The coarse mesh; checks that no rigid motion is left unheld. */
+    /**
+     * The initial mesh; refuses one whose finest cycle would not fit in the
+     * memory (run_size.h) before building it, warns above half of it;
+     * checks that no rigid motion is left unheld.
+     */
     void
     make_grid();
 
