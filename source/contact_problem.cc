@@ -599,7 +599,12 @@ namespace dualcontact
     if (cycle == 0)
       {
         if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          std::filesystem::create_directories(parameters.output.directory);
+          {
+            std::filesystem::create_directories(parameters.output.directory);
+            if (!recorded_parameters.empty())
+              std::ofstream(parameters.output.directory + "/parameters.prm")
+                << recorded_parameters;
+          }
         MPI_Barrier(mpi_communicator);
       }
     if (!parameters.output.write_vtu)

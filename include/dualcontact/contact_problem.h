@@ -204,6 +204,18 @@ namespace dualcontact
       return report;
     }
 
+    /**
+     * Text written as parameters.prm beside the first results (rank 0):
+     * dualcontact gives the parameter file it read, overrides applied. By
+     * default nothing is written: a program that changes the parameters
+     * after reading them has no file that describes them.
+     */
+    void
+    record_parameters(const std::string &parameter_file)
+    {
+      recorded_parameters = parameter_file;
+    }
+
   private:
     SolveFigures
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
@@ -282,6 +294,7 @@ namespace dualcontact
 
     // the (cycle, file) list of the .pvd record
     std::vector<std::pair<double, std::string>> pvtu_records;
+    std::string                                 recorded_parameters;
   };
 } // namespace dualcontact
 
