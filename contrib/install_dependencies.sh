@@ -4,7 +4,8 @@
 # Meant for Debian 12 (bookworm); run as root (or with sudo available).
 set -euo pipefail
 
-packages=(g++ cmake make libdeal.ii-dev catch2 numdiff openmpi-bin)
+packages=(g++ cmake make libdeal.ii-dev libboost-program-options-dev catch2 numdiff
+  openmpi-bin)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -18,9 +18,11 @@
 #include <dualcontact/contact_functions.h>
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
+#include <dualcontact/output_directory.h>
 #include <dualcontact/plausibility.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/refinement.h>
+#include <dualcontact/run_size.h>
 
 #include <cmath>
 #include <filesystem>
@@ -62,35 +64,47 @@ namespace dualcontact
   void
   ContactProblem<dim>::run()
   {
-    make_grid(); // checks the input first: nothing is written before
-    report.print_scene();
-
-    for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
-         ++cycle)
+    // The output folder first: one that cannot be made is bad input, found
+    // before the mesh is built. A run that fails before it wrote anything
+    // removes it again.
+    const OutputDirectory output(parameters.output.directory, mpi_communicator);
+    try
       {
-        if (cycle > 0)
-          refine_mesh();
+        make_grid(); // checks the input first: nothing is written before
+        report.print_scene();
 
-        CycleResult result;
-        result.mesh     = setup_system(cycle);
-        result.transfer = transfer_fields();
-        report.start_cycle(result.mesh, result.transfer);
-
-        assemble_system();
-        result.solve    = solve();
-        result.position = check_position();
-        if (scene.effects().contact)
+        for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
+             ++cycle)
           {
-            result.zone = measure_contact_zone();
-            result.cold = compare_with_cold_start();
-          }
-        result.errors    = postprocess();
-        result.reactions = compute_reactions(result.zone);
+            if (cycle > 0)
+              refine_mesh();
 
-        output_results(cycle);
-        report.end_cycle(result);
+            CycleResult result;
+            result.mesh     = setup_system(cycle);
+            result.transfer = transfer_fields();
+            report.start_cycle(result.mesh, result.transfer);
+
+            assemble_system();
+            result.solve    = solve();
+            result.position = check_position();
+            if (scene.effects().contact)
+              {
+                result.zone = measure_contact_zone();
+                result.cold = compare_with_cold_start();
+              }
+            result.errors    = postprocess();
+            result.reactions = compute_reactions(result.zone);
+
+            output_results(cycle);
+            report.end_cycle(result);
+          }
+        report.finish();
       }
-    report.finish();
+    catch (...)
+      {
+        output.remove_if_unused();
+        throw;
+      }
   }
 
   template <int dim>
@@ -98,7 +112,16 @@ namespace dualcontact
   ContactProblem<dim>::make_grid()
   {
     TimerOutput::Scope t(computing_timer, "make grid");
-    scene.create_mesh(triangulation);
+    // The size of the finest mesh is checked against the memory before
+    // each refinement that builds the initial mesh, and once it is built:
+    // a scene refined far too often stops at once, not with std::bad_alloc
+    // after minutes.
+    const RunSizeCheck size(parameters, mpi_communicator);
+    scene.create_mesh(triangulation, [&size](const double n_cells) {
+      size.check(n_cells, false);
+    });
+    size.check(triangulation.n_global_active_cells(), true);
+    size.warn(triangulation.n_global_active_cells());
     scene.check_rigid_motions(triangulation);
     check_initial_position(triangulation, scene);
   }
@@ -616,12 +639,18 @@ namespace dualcontact
   void
   ContactProblem<dim>::output_results(const unsigned int cycle)
   {
-    // The output folder is made only now: a run that fails on its first
-    // mesh (bad input found late, no equilibrium) writes nothing.
+    // The first file is written only now: a run that fails on its first
+    // mesh (bad input found late, no equilibrium) writes nothing. run()
+    // made the folder; a program that calls the phases itself may not have.
     if (cycle == 0)
       {
         if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          std::filesystem::create_directories(parameters.output.directory);
+          {
+            std::filesystem::create_directories(parameters.output.directory);
+            if (!recorded_parameters.empty())
+              std::ofstream(parameters.output.directory + "/parameters.prm")
+                << recorded_parameters;
+          }
         MPI_Barrier(mpi_communicator);
       }
     if (!parameters.output.write_vtu)

@@ -1,8 +1,11 @@
 // dualcontact: run one scene (.prm file).
 //
-//   dualcontact scene.prm          run it (mpirun -np N dualcontact scene.prm)
-//   dualcontact --help             usage
-//   dualcontact --print-parameters every entry with its default and help text
+//   dualcontact scene.prm [--set "Subsection/Entry=value" ...]
+//                                    run it (mpirun -np N dualcontact ...)
+//   dualcontact --help               usage
+//   dualcontact --print-parameters [scene.prm [--set ...]]
+//                                    every entry with its default (or the
+//                                    scene's value) and help text
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -11,53 +14,132 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameters.h>
 
+#include <boost/program_options.hpp>
 #include <exception>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
+  namespace po = boost::program_options;
+
   /**
-   * Run one scene. Bad input found inside run() is caught while the problem
+   * Run one scene. Any exception from run() is caught while the problem
    * still exists and rethrown after it is gone: the problem's objects then
-   * finish normally (every rank throws the same InputError together) instead
-   * of during stack unwinding, where deal.II would warn about MPI.
+   * finish normally (every rank throws the same InputError together)
+   * instead of during stack unwinding, where deal.II would warn about MPI
+   * and TimerOutput would print its notice about an uncaught exception in
+   * front of the error message.
    */
   template <int dim>
   void
   run_scene(const dualcontact::Parameters &parameters)
   {
-    std::exception_ptr input_error;
+    std::exception_ptr error;
     {
       dualcontact::ContactProblem<dim> problem(parameters);
+      problem.record_parameters(parameters.parameter_file);
       try
         {
           problem.run();
         }
-      catch (const dualcontact::InputError &)
+      catch (...)
         {
-          input_error = std::current_exception();
+          error = std::current_exception();
         }
     }
-    if (input_error)
-      std::rethrow_exception(input_error);
+    if (error)
+      std::rethrow_exception(error);
   }
 
-  const char *const usage =
-    "Usage: dualcontact [--help | --print-parameters] [scene.prm]\n"
-    "\n"
-    "Elastic contact with Coulomb friction by modified duality schemes.\n"
-    "Runs the scene described by the parameter file; in parallel with\n"
-    "  mpirun -np N dualcontact scene.prm\n"
-    "\n"
-    "Options:\n"
-    "  --help              this text\n"
-    "  --print-parameters  print a parameter file with every entry, its\n"
-    "                      default value and help text (units in brackets)\n"
-    "\n"
-    "Exit status: 0 success, 1 solver failure, 2 wrong command line,\n"
-    "3 parameter file unreadable, 4 unknown entry or malformed line,\n"
-    "5 invalid value, 6 inconsistent scene, 7 load the foundation cannot hold.\n";
+  struct CommandLine
+  {
+    bool                     help             = false;
+    bool                     print_parameters = false;
+    std::vector<std::string> scenes;
+    std::vector<std::string> overrides;
+  };
+
+  po::options_description
+  options()
+  {
+    po::options_description options("Options");
+    options.add_options()("help,h", "this text")(
+      "print-parameters",
+      "print a parameter file with every entry, its value (the default, or "
+      "the scene's with the overrides applied if a scene is given) and help "
+      "text (units in brackets), and stop")(
+      "set",
+      po::value<std::vector<std::string>>()->composing(),
+      "\"Subsection/Entry=value\": override one entry of the scene (after the "
+      "file; repeat for several), e.g. --set \"Friction/Coefficient=0.4\"");
+    return options;
+  }
+
+  std::string
+  usage()
+  {
+    std::ostringstream text;
+    text
+      << "Usage: dualcontact [--set \"Subsection/Entry=value\" ...] scene.prm\n"
+         "       dualcontact --print-parameters [scene.prm [--set ...]]\n"
+         "       dualcontact --help\n"
+         "\n"
+         "Elastic contact with Coulomb friction by modified duality schemes.\n"
+         "Runs the scene described by the parameter file; in parallel with\n"
+         "  mpirun -np N dualcontact scene.prm\n"
+         "\n"
+      << options()
+      << "\n"
+         "Exit status: 0 success, 1 solver failure, 2 wrong command line,\n"
+         "3 parameter file unreadable, 4 unknown entry, malformed line or entry\n"
+         "set twice, 5 invalid value (or an output folder that cannot be\n"
+         "made), 6 inconsistent scene (or a mesh too large for the machine's\n"
+         "memory), 7 load the foundation cannot hold.\n";
+    return text.str();
+  }
+
+  /** Boost.Program_options; InputError (exit 2) for a wrong command line. */
+  CommandLine
+  parse_command_line(int argc, char *argv[])
+  {
+    po::options_description all = options();
+    all.add_options()("scene", po::value<std::vector<std::string>>());
+    po::positional_options_description positional;
+    positional.add("scene", -1);
+
+    po::variables_map values;
+    try
+      {
+        po::store(po::command_line_parser(argc, argv)
+                    .options(all)
+                    .positional(positional)
+                    .run(),
+                  values);
+        po::notify(values);
+      }
+    catch (const po::error &error)
+      {
+        throw dualcontact::InputError(std::string(error.what()) + ".",
+                                      dualcontact::exit_usage);
+      }
+
+    CommandLine line;
+    line.help             = values.count("help") > 0;
+    line.print_parameters = values.count("print-parameters") > 0;
+    if (values.count("scene"))
+      line.scenes = values["scene"].as<std::vector<std::string>>();
+    if (values.count("set"))
+      line.overrides = values["set"].as<std::vector<std::string>>();
+    const bool needs_scene = !line.help && !line.print_parameters;
+    if ((needs_scene && line.scenes.size() != 1) || line.scenes.size() > 1 ||
+        (line.scenes.empty() && !line.overrides.empty()))
+      throw dualcontact::InputError("expected exactly one parameter file.",
+                                    dualcontact::exit_usage);
+    return line;
+  }
 } // namespace
 
 int
@@ -68,31 +150,34 @@ main(int argc, char *argv[])
   const bool                               root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h"))
-    {
-      if (root)
-        std::cout << usage;
-      return exit_success;
-    }
-  if (args.size() == 1 && args[0] == "--print-parameters")
-    {
-      if (root)
-        std::cout << default_parameter_file();
-      return exit_success;
-    }
-  if (args.size() != 1 || args[0].empty() || args[0][0] == '-')
-    {
-      if (root)
-        std::cerr << "dualcontact: expected exactly one parameter file.\n\n"
-                  << usage;
-      return exit_usage;
-    }
-
   try
     {
+      const CommandLine line = parse_command_line(argc, argv);
+      if (line.help)
+        {
+          if (root)
+            std::cout << usage();
+          return exit_success;
+        }
+      if (line.print_parameters && line.scenes.empty())
+        {
+          if (root)
+            std::cout << default_parameter_file();
+          return exit_success;
+        }
+
       Parameters parameters;
-      parameters.read_file(args[0]);
+      parameters.read_file(line.scenes[0], line.overrides);
+      if (line.print_parameters)
+        {
+          if (root)
+            std::cout << parameters.parameter_file;
+          return exit_success;
+        }
+      if (root)
+        for (const std::string &warning : parameters.ineffective_entries())
+          std::cerr << "dualcontact: warning: " << warning << std::endl;
+
       if (parameters.geometry.dimension == 2)
         run_scene<2>(parameters);
       else
@@ -101,7 +186,11 @@ main(int argc, char *argv[])
   catch (const InputError &error)
     {
       if (root)
-        std::cerr << "dualcontact: " << error.what() << std::endl;
+        {
+          std::cerr << "dualcontact: " << error.what() << std::endl;
+          if (error.code == exit_usage)
+            std::cerr << '\n' << usage();
+        }
       return error.code;
     }
   catch (const dealii::ExceptionBase &exc)

@@ -3,13 +3,10 @@
 
 #include <dualcontact/friction_law.h>
 #include <dualcontact/input_error.h>
+#include <dualcontact/parameter_reader.h>
 #include <dualcontact/parameters.h>
 
-#include <cctype>
 #include <cmath>
-#include <fstream>
-#include <iterator>
-#include <set>
 #include <sstream>
 
 namespace dualcontact
@@ -90,61 +87,46 @@ namespace dualcontact
                            ":");
     }
 
-    // The "Additional information" of a deal.II exception, without banner.
+    // a number as the user would write it (0, -1, 2.5)
     std::string
-    short_message(const ExceptionBase &exc)
+    number_text(const double x)
     {
       std::ostringstream out;
-      exc.print_info(out);
-      std::string text = out.str();
-      // collapse whitespace runs (deal.II wraps its messages over lines)
-      std::string result;
-      bool        in_space = false;
-      for (const char c : text)
-        if (std::isspace(static_cast<unsigned char>(c)))
-          in_space = true;
-        else
+      out << x;
+      return out.str();
+    }
+
+    /**
+     * The friction law takes its parameter from one entry (<Friction/
+     * Coefficient> or <Friction/Threshold>). Giving only the other one is
+     * a mix-up of the two laws: the run would be frictionless, which is
+     * never what was meant.
+     */
+    void
+    check_friction_entries(const FrictionParameters                 &friction,
+                           const std::map<std::string, std::string> &given)
+    {
+      const std::string used =
+        create_friction_law(friction.law)->parameter_entry();
+      if (used.empty() || given.count("Friction/" + used) > 0)
+        return;
+      for (const std::string other : {"Coefficient", "Threshold"})
+        if (other != used && given.count("Friction/" + other) > 0)
           {
-            if (in_space && !result.empty())
-              result += ' ';
-            in_space = false;
-            result += c;
+            std::string  laws;
+            unsigned int n_laws = 0;
+            for (const std::string &name : friction_law_names())
+              if (create_friction_law(name)->parameter_entry() == other)
+                laws += (n_laws++ == 0 ? "'" : ", '") + name + "'";
+            throw InputError("The friction law '" + friction.law +
+                               "' needs <Friction/" + used +
+                               ">, which is not given (0 by default: no "
+                               "friction); <Friction/" +
+                               other + "> (" + given.at("Friction/" + other) +
+                               ") is for the law" + (n_laws > 1 ? "s " : " ") +
+                               laws + ".",
+                             exit_inconsistent);
           }
-      return result;
-    }
-
-    // Turn a ParameterHandler parse failure into an InputError with its code.
-    [[noreturn]] void
-    rethrow_parse_error(const ExceptionBase &exc, const std::string &source)
-    {
-      const std::string message = short_message(exc);
-      ExitCode          code    = exit_unknown_entry;
-      if (message.find("does not match the given pattern") !=
-            std::string::npos ||
-          message.find("doesn't match the pattern") != std::string::npos)
-        code = exit_invalid_value;
-      throw InputError("Error in " + source + ": " + message, code);
-    }
-
-    // True if the text of a parameter file has at least one 'set' or
-    // 'include' line (comments, blank lines, 'subsection' and 'end' are no
-    // entries).
-    bool
-    has_entries(const std::string &text)
-    {
-      std::istringstream lines(text);
-      std::string        line;
-      while (std::getline(lines, line))
-        {
-          line = Utilities::trim(line.substr(0, line.find('#')));
-          for (const std::string keyword : {"set", "include"})
-            if (line.compare(0, keyword.size(), keyword) == 0 &&
-                (line.size() == keyword.size() ||
-                 std::isspace(
-                   static_cast<unsigned char>(line[keyword.size()]))))
-              return true;
-        }
-      return false;
     }
   } // namespace
 
@@ -308,6 +290,18 @@ namespace dualcontact
     pre_refinement_distance = prm.get_double("Pre-refinement distance");
     pre_refinement_grading  = prm.get_double("Pre-refinement grading");
     prm.leave_subsection();
+    // the patterns allow 0 (Patterns::Double has closed bounds), which
+    // would fail late, inside deal.II's mesh or manifold code
+    if (type != GeometryType::rectangle && !(radius > 0.))
+      throw InputError("The entry <Geometry/Radius> must be positive: a " +
+                         to_string(type) + " of radius " + number_text(radius) +
+                         " has no area.",
+                       exit_invalid_value);
+    if (pre_refinement_steps > 1 && !(pre_refinement_grading > 0.))
+      throw InputError("The entry <Geometry/Pre-refinement grading> must be "
+                       "positive: 0 shrinks the pre-refinement band to "
+                       "nothing after the first step.",
+                       exit_invalid_value);
   }
 
   // ------------------------------------------------------------ Material
@@ -935,48 +929,51 @@ namespace dualcontact
   }
 
   void
-  Parameters::read_file(const std::string &filename)
+  Parameters::read_file(const std::string              &filename,
+                        const std::vector<std::string> &overrides)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError("Cannot open the parameter file <" + filename + ">.",
-                       exit_cannot_read_file);
-    const std::string  content((std::istreambuf_iterator<char>(in)),
-                              std::istreambuf_iterator<char>());
-    std::istringstream text(content);
-    ParameterHandler   prm;
+    ParameterHandler prm;
     declare_parameters(prm);
-    try
-      {
-        prm.parse_input(text, filename);
-      }
-    catch (const ExceptionBase &exc)
-      {
-        rethrow_parse_error(exc, "parameter file <" + filename + ">");
-      }
-    // A file without a single 'set' (or 'include') line is empty, or only
-    // comments: every entry would keep its default, which is never meant.
-    if (!has_entries(content))
+    ParameterReader reader(prm);
+    reader.read_file(filename);
+    // A file without a single 'set' line (in it or in a file it includes)
+    // is empty, or only comments: every entry would keep its default, which
+    // is never meant.
+    if (!reader.scene_has_entries())
       throw InputError("The parameter file <" + filename +
                          "> has no entries (no 'set' line): it is empty or "
                          "holds only comments.",
                        exit_cannot_read_file);
-    parse_parameters(prm);
+    std::string source = filename;
+    for (const std::string &assignment : overrides)
+      {
+        reader.set_override(assignment);
+        source += " --set \"" + assignment + "\"";
+      }
+    use(prm, reader);
+    parameter_file = "# The parameters of a dualcontact run: " + source + "\n" +
+                     parameter_file;
   }
 
   void
-  Parameters::read_string(const std::string &text)
+  Parameters::read_string(const std::string &text, const std::string &overlay)
   {
     ParameterHandler prm;
     declare_parameters(prm);
-    try
-      {
-        prm.parse_input_from_string(text);
-      }
-    catch (const ExceptionBase &exc)
-      {
-        rethrow_parse_error(exc, "parameters");
-      }
+    ParameterReader reader(prm);
+    reader.read_text(text, "parameters");
+    if (!overlay.empty())
+      reader.read_overlay(overlay, "overlay");
+    use(prm, reader);
+  }
+
+  void
+  Parameters::use(ParameterHandler &prm, const ParameterReader &reader)
+  {
+    given = reader.given_entries();
+    std::ostringstream out;
+    prm.print_parameters(out, ParameterHandler::PRM);
+    parameter_file = out.str();
     parse_parameters(prm);
   }
 
@@ -1071,6 +1068,8 @@ namespace dualcontact
       throw InputError("The entry <Friction/Law> asks for friction, but no "
                        "boundary id has the condition 'contact'.",
                        exit_inconsistent);
+
+    check_friction_entries(friction, given);
 
     if (geometry.pre_refinement_steps > 0 &&
         boundary.ids_with(BoundaryCondition::contact).empty())

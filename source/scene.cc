@@ -17,7 +17,9 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/scene.h>
 
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace dualcontact
@@ -309,7 +311,8 @@ namespace dualcontact
   template <int dim>
   void
   Scene<dim>::create_mesh(
-    parallel::distributed::Triangulation<dim> &triangulation) const
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const std::function<void(double)>         &before_refining) const
   {
     const GeometryParameters &g = parameters.geometry;
     if (g.type == GeometryType::rectangle)
@@ -392,21 +395,57 @@ namespace dualcontact
         triangulation.set_manifold(1, inner);
       }
 
+    // each refinement makes 2^dim children of a cell
+    const double children = std::pow(2., dim);
+    if (before_refining)
+      before_refining(
+        triangulation.n_global_active_cells() *
+        std::pow(children, parameters.refinement.initial_global_refinement));
     triangulation.refine_global(
       parameters.refinement.initial_global_refinement);
+
+    // A step whose band reaches the vertex farthest from the foundation
+    // refines every cell: what the remaining steps make at least is known
+    // before they are made.
+    double farthest = -std::numeric_limits<double>::max();
+    if (before_refining && g.pre_refinement_steps > 0)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              farthest = std::max(farthest, initial_gap(cell->vertex(v)));
+        farthest =
+          Utilities::MPI::max(farthest, triangulation.get_communicator());
+      }
 
     double distance = g.pre_refinement_distance;
     for (unsigned int step = 0; step < g.pre_refinement_steps;
          ++step, distance *= g.pre_refinement_grading)
       {
+        unsigned int n_flagged = 0;
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             for (const unsigned int v : cell->vertex_indices())
               if (initial_gap(cell->vertex(v)) <= distance)
                 {
                   cell->set_refine_flag();
+                  ++n_flagged;
                   break;
                 }
+        if (before_refining)
+          {
+            double n_cells =
+              triangulation.n_global_active_cells() +
+              (children - 1.) *
+                Utilities::MPI::sum(n_flagged,
+                                    triangulation.get_communicator());
+            double later = distance * g.pre_refinement_grading;
+            for (unsigned int next = step + 1;
+                 next < g.pre_refinement_steps && later >= farthest;
+                 ++next, later *= g.pre_refinement_grading)
+              n_cells *= children;
+            before_refining(n_cells);
+          }
         triangulation.execute_coarsening_and_refinement();
       }
   }

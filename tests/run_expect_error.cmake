@@ -3,14 +3,19 @@
 #   cmake -DPROGRAM=<dualcontact> -DWORK_DIR=<dir>
 #         [-DPRM=<file.prm>] [-DARGS=<arg>|<arg>...]
 #         [-DEXPECTED_EXIT=<n>] [-DSTDERR_REGEX=<re>] [-DSTDOUT_REGEX=<re>]
+#         [-DALLOWED_OUTPUT=<name>] [-DFILE=<path> -DFILE_REGEX=<re>]
 #         -P run_expect_error.cmake
 #
 # The program runs in WORK_DIR, emptied first. The test passes if
 #   - the exit code is EXPECTED_EXIT,
 #   - stderr matches STDERR_REGEX and stdout matches STDOUT_REGEX (if given),
 #   - WORK_DIR is still empty afterwards: bad input writes no file at all.
-# With PRM, the file is the program's argument, and EXPECTED_EXIT and
-# STDERR_REGEX default to what its leading comment says:
+#     Only a run that is meant to succeed may be given ALLOWED_OUTPUT: then
+#     WORK_DIR may hold that one entry (its output folder) and nothing else;
+#   - the file FILE (relative to WORK_DIR), if given, matches FILE_REGEX.
+# With PRM, the file is the program's argument (after those of ARGS), and
+# unless EXPECTED_EXIT is given, EXPECTED_EXIT and STDERR_REGEX are what its
+# leading comment says:
 #   # expected exit code: 5
 #   # expected message: <Material/Poisson's ratio>
 # ARGS separates several arguments by '|'.
@@ -33,6 +38,10 @@ if(DEFINED PRM)
     message(FATAL_ERROR "run_expect_error.cmake: no file ${PRM}")
   endif()
   list(APPEND _arguments "${PRM}")
+  set(_exit_given FALSE)
+  if(DEFINED EXPECTED_EXIT)
+    set(_exit_given TRUE)
+  endif()
   file(STRINGS "${PRM}" _code_line REGEX "^# expected exit code: *[0-9]+ *$")
   file(STRINGS "${PRM}" _message_line REGEX "^# expected message: ")
   if(NOT DEFINED EXPECTED_EXIT)
@@ -43,7 +52,8 @@ if(DEFINED PRM)
     string(REGEX REPLACE "^# expected exit code: *([0-9]+) *$" "\\1"
       EXPECTED_EXIT "${_code_line}")
   endif()
-  if(NOT DEFINED STDERR_REGEX)
+  # a caller that gives EXPECTED_EXIT gives its own checks
+  if(NOT DEFINED STDERR_REGEX AND NOT _exit_given)
     if(NOT _message_line)
       message(FATAL_ERROR "${PRM} has no line '# expected message: <regex>'.")
     endif()
@@ -83,8 +93,22 @@ if(DEFINED STDOUT_REGEX AND NOT "${_stdout}" MATCHES "${STDOUT_REGEX}")
   string(APPEND _failures
     "  stdout does not match the regular expression '${STDOUT_REGEX}'\n")
 endif()
+if(DEFINED FILE)
+  if(NOT EXISTS "${WORK_DIR}/${FILE}")
+    string(APPEND _failures "  the run wrote no file ${FILE}\n")
+  else()
+    file(READ "${WORK_DIR}/${FILE}" _file_text)
+    if(NOT "${_file_text}" MATCHES "${FILE_REGEX}")
+      string(APPEND _failures
+        "  ${FILE} does not match the regular expression '${FILE_REGEX}'\n")
+    endif()
+  endif()
+endif()
 file(GLOB _left_behind LIST_DIRECTORIES true RELATIVE "${WORK_DIR}"
-  "${WORK_DIR}/*")
+  "${WORK_DIR}/*" "${WORK_DIR}/.*")
+if(DEFINED ALLOWED_OUTPUT)
+  list(REMOVE_ITEM _left_behind "${ALLOWED_OUTPUT}")
+endif()
 if(_left_behind)
   string(REPLACE ";" ", " _left_behind "${_left_behind}")
   string(APPEND _failures

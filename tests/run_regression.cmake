@@ -17,13 +17,15 @@
 #          set Write vtu    = false
 #          set Directory    = output
 #        end
-#    deal.II's ParameterHandler reads a file top to bottom, and a later
-#    'subsection X / set Y = ... / end' block simply sets Y again: the last
-#    value wins. So OVERRIDES can change any entry of PRM (e.g. fewer
-#    Refinement/Number of cycles), and the Output block always holds: no wall
-#    times on screen, no .vtu files, everything written to WORK_DIR/output/.
-#    An override of an entry that does not exist fails like any unknown entry
-#    (exit status 4), so a misspelt override cannot pass unnoticed.
+#    An entry set twice in a parameter file is an error (exit status 4), so
+#    the 'set' lines of PRM for the entries that OVERRIDES or the Output
+#    block set are left out of scene.prm (found by subsection and name; PRM
+#    must not use '\' continuation lines or 'include' for them). So OVERRIDES
+#    can change any entry of PRM (e.g. fewer Refinement/Number of cycles),
+#    and the Output block always holds: no wall times on screen, no .vtu
+#    files, everything written to WORK_DIR/output/. An override of an entry
+#    that does not exist fails like any unknown entry (exit status 4), so a
+#    misspelt override cannot pass unnoticed.
 # 2. `mpirun -np NP PROGRAM scene.prm` runs in WORK_DIR; its stdout goes to
 #    WORK_DIR/screen.raw.out.
 # 3. Wall times that the program prints even with Print timing = false are
@@ -129,26 +131,79 @@ file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
 # ------------------------------------------------------------ scene file
-file(READ "${PRM}" _scene)
-if(NOT _scene MATCHES "\n$")
-  string(APPEND _scene "\n")
-endif()
+# The lines of a .prm text as a CMake list; ';', '[' and ']' (list syntax)
+# are spelt <sc>, <lb>, <rb> until _prm_text() puts them back.
+function(_prm_lines text out)
+  string(REPLACE ";" "<sc>" text "${text}")
+  string(REPLACE "[" "<lb>" text "${text}")
+  string(REPLACE "]" "<rb>" text "${text}")
+  string(REPLACE "\n" ";" text "${text}")
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+function(_prm_text lines out)
+  string(REPLACE ";" "\n" text "${lines}")
+  string(REPLACE "<sc>" ";" text "${text}")
+  string(REPLACE "<lb>" "[" text "${text}")
+  string(REPLACE "<rb>" "]" text "${text}")
+  set(${out} "${text}\n" PARENT_SCOPE)
+endfunction()
+
+# Walk the lines of a .prm text: `keys` gets "Subsection/Entry" of every
+# 'set' line; `kept` gets the lines, without the 'set' lines of `drop`.
+function(_prm_walk lines drop keys kept)
+  set(_path "")
+  set(_keys "")
+  set(_kept "")
+  foreach(_line IN LISTS lines)
+    string(REGEX REPLACE "#.*" "" _code "${_line}")
+    string(STRIP "${_code}" _code)
+    set(_keep TRUE)
+    if(_code MATCHES "^(subsection|SUBSECTION) +(.*)$")
+      string(STRIP "${CMAKE_MATCH_2}" _name)
+      list(APPEND _path "${_name}")
+    elseif(_code MATCHES "^(end|END)$")
+      list(LENGTH _path _depth)
+      if(_depth GREATER 0)
+        list(REMOVE_AT _path -1)
+      endif()
+    elseif(_code MATCHES "^(set|SET) +([^=]*)=")
+      string(STRIP "${CMAKE_MATCH_2}" _name)
+      string(REPLACE ";" "/" _key "${_path}")
+      set(_key "${_key}/${_name}")
+      list(APPEND _keys "${_key}")
+      if("${_key}" IN_LIST drop)
+        set(_keep FALSE)
+        set(_line "# (run_regression.cmake: set below) ${_line}")
+      endif()
+    endif()
+    list(APPEND _kept "${_line}")
+  endforeach()
+  set(${keys} "${_keys}" PARENT_SCOPE)
+  set(${kept} "${_kept}" PARENT_SCOPE)
+endfunction()
+
+set(_overlay "")
 if(DEFINED OVERRIDES AND NOT "${OVERRIDES}" STREQUAL "")
   file(READ "${OVERRIDES}" _overrides)
-  if(NOT _overrides MATCHES "\n$")
-    string(APPEND _overrides "\n")
-  endif()
-  string(APPEND _scene
+  string(APPEND _overlay
     "\n# ---- run_regression.cmake: overrides from ${OVERRIDES}\n"
-    "${_overrides}")
+    "${_overrides}\n")
 endif()
-string(APPEND _scene
+string(APPEND _overlay
   "\n# ---- run_regression.cmake: always\n"
   "subsection Output\n"
   "  set Print timing = false\n"
   "  set Write vtu    = false\n"
   "  set Directory    = output\n"
   "end\n")
+file(READ "${PRM}" _scene)
+_prm_lines("${_overlay}" _overlay_lines)
+_prm_walk("${_overlay_lines}" "" _overlay_keys _unused)
+_prm_lines("${_scene}" _scene_lines)
+_prm_walk("${_scene_lines}" "${_overlay_keys}" _unused _scene_lines)
+_prm_text("${_scene_lines}" _scene)
+string(APPEND _scene "${_overlay}")
 set(_scene_file "${WORK_DIR}/scene.prm")
 file(WRITE "${_scene_file}" "${_scene}")
 

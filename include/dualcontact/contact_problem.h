@@ -62,7 +62,11 @@ namespace dualcontact
 
     // ---------------------------------------------------------- the phases
 
-    /** The coarse mesh; checks that no rigid motion is left unheld. */
+    /**
+     * The initial mesh; refuses one whose finest cycle would not fit in the
+     * memory (run_size.h) before building it, warns above half of it;
+     * checks that no rigid motion is left unheld.
+     */
     void
     make_grid();
 
@@ -209,6 +213,18 @@ namespace dualcontact
       return report;
     }
 
+    /**
+     * Text written as parameters.prm beside the first results (rank 0):
+     * dualcontact gives the parameter file it read, overrides applied. By
+     * default nothing is written: a program that changes the parameters
+     * after reading them has no file that describes them.
+     */
+    void
+    record_parameters(const std::string &parameter_file)
+    {
+      recorded_parameters = parameter_file;
+    }
+
   private:
     SolveFigures
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
@@ -290,6 +306,7 @@ namespace dualcontact
 
     // the (cycle, file) list of the .pvd record
     std::vector<std::pair<double, std::string>> pvtu_records;
+    std::string                                 recorded_parameters;
   };
 } // namespace dualcontact
 

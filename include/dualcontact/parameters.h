@@ -16,6 +16,8 @@ namespace dualcontact
   using dealii::ParameterHandler;
   using dealii::types::boundary_id;
 
+  class ParameterReader;
+
   enum class GeometryType
   {
     rectangle,
@@ -269,16 +271,58 @@ namespace dualcontact
     void
     parse_parameters(ParameterHandler &prm);
 
-    /** Read a .prm file; InputError with the matching exit code on failure. */
+    /**
+     * Read a .prm file, then the overrides "Subsection/Entry=value" (the
+     * command line's --set); InputError with the matching exit code on
+     * failure (parameter_reader.h has the rules).
+     */
     void
-    read_file(const std::string &filename);
-    /** Read parameters from a string in .prm syntax (for tests, tutorials). */
+    read_file(const std::string              &filename,
+              const std::vector<std::string> &overrides = {});
+    /**
+     * Read parameters from a string in .prm syntax (for tests, tutorials),
+     * then `overlay`, .prm text whose entries override the string's.
+     */
     void
-    read_string(const std::string &text);
+    read_string(const std::string &text, const std::string &overlay = "");
 
     /** Cross-checks of entries against each other; throws InputError. */
     void
     check_consistency() const;
+
+    /**
+     * One line per entry that was given but has no effect in this scene (a
+     * friction coefficient without a friction law, refinement fractions with
+     * global refinement, ...): which entry, why, and where it was set.
+     */
+    std::vector<std::string>
+    ineffective_entries() const;
+
+    /**
+     * The entries the input set to a value other than their default
+     * ("Subsection/Entry"), each with where its value comes from
+     * ("scene.prm:12", "--set"); empty for parameters not read from text.
+     */
+    std::map<std::string, std::string> given;
+
+    /** Whether the input gave `entry` ("Subsection/Entry"). */
+    bool
+    is_given(const std::string &entry) const
+    {
+      return given.count(entry) > 0;
+    }
+
+    /**
+     * The parameters as read (file and overrides), in the form of
+     * --print-parameters: every entry with its value, default and help
+     * text. dualcontact writes it to the output folder as parameters.prm.
+     * It is not updated when a program changes the members afterwards.
+     */
+    std::string parameter_file;
+
+  private:
+    void
+    use(ParameterHandler &prm, const ParameterReader &reader);
   };
 
   /** The default parameter file, with every help text, as a string. */

@@ -13,6 +13,7 @@
 #include <dualcontact/friction_law.h>
 #include <dualcontact/parameters.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -55,9 +56,16 @@ namespace dualcontact
      */
     explicit Scene(const Parameters &parameters);
 
-    /** Coarse mesh, manifolds, initial global refinement, pre-refinement. */
+    /**
+     * Coarse mesh, manifolds, initial global refinement, pre-refinement.
+     * `before_refining`, if given, gets the number of cells the mesh will
+     * have at least after the next refinement (the global one, then each
+     * pre-refinement step), before that refinement is made: the caller can
+     * stop a mesh too large for the memory before it is built.
+     */
     void
-    create_mesh(parallel::distributed::Triangulation<dim> &triangulation) const;
+    create_mesh(parallel::distributed::Triangulation<dim> &triangulation,
+                const std::function<void(double)> &before_refining = {}) const;
 
     /**
      * Throw InputError if the scene leaves a rigid motion free and nothing

@@ -41,12 +41,17 @@ namespace dualcontact_test
       directory = temporary_directory("contact" + std::to_string(dim) + "d" +
                                         std::to_string(counter++),
                                       comm);
-      parameters.read_string(
-        (scene.empty() ? std::string() :
-                         read_text(test_file("../prm/" + scene))) +
-        overrides + "\nsubsection Output\n  set Directory = " + directory +
-        "\n  set Write vtu = false\n  set Print timing = "
-        "false\nend\n");
+      // the overrides (and the output entries) are an overlay: they may
+      // change what the scene sets
+      const std::string output =
+        "\nsubsection Output\n  set Directory = " + directory +
+        "\n  set Write vtu = false\n  set Print "
+        "timing = false\nend\n";
+      if (scene.empty())
+        parameters.read_string(overrides, output);
+      else
+        parameters.read_string(read_text(test_file("../prm/" + scene)),
+                               overrides + output);
       problem = std::make_unique<ContactProblem<dim>>(parameters, comm, screen);
       problem->run();
     }

@@ -23,18 +23,18 @@ namespace
   Parameters
   mms_parameters(const std::string &directory)
   {
-    // later 'set' lines override earlier ones: append the output entries
-    const std::string text =
-      dualcontact_test::read_text(dualcontact_test::test_file("prm/mms.prm")) +
-      "\nsubsection Output\n"
-      "  set Directory = " +
-      directory +
-      "\n"
-      "  set Write vtu = false\n"
-      "  set Print timing = false\n"
-      "end\n";
+    // the output entries are an overlay: they override the scene's
+    const std::string output = "subsection Output\n"
+                               "  set Directory = " +
+                               directory +
+                               "\n"
+                               "  set Write vtu = false\n"
+                               "  set Print timing = false\n"
+                               "end\n";
     Parameters parameters;
-    parameters.read_string(text);
+    parameters.read_string(dualcontact_test::read_text(
+                             dualcontact_test::test_file("prm/mms.prm")),
+                           output);
     return parameters;
   }
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dualcontact/input_error.h>
+#include <dualcontact/parameter_reader.h>
 #include <dualcontact/parameters.h>
 #include <dualcontact/scene.h>
 
@@ -63,12 +64,282 @@ TEST_CASE("The default parameter file parses back and gives the defaults",
   CHECK(parameters.exact.displacement.empty());
 }
 
-TEST_CASE("Later 'set' lines override earlier ones", "[parameters]")
+TEST_CASE("An entry set twice is an error naming both lines; an overlay "
+          "overrides the scene's value once",
+          "[parameters][errors]")
+{
+  const CaughtError twice =
+    error_reading("subsection Output\n set Directory = a\nend\n"
+                  "subsection Output\n set Directory = b\nend\n");
+  REQUIRE(twice.thrown);
+  CHECK(twice.code == exit_unknown_entry);
+  CHECK(contains(twice.message,
+                 "<Output/Directory> is set twice, at parameters:2 and at "
+                 "parameters:5"));
+
+  Parameters parameters;
+  parameters.read_string("subsection Output\n set Directory = a\nend\n",
+                         "subsection Output\n set Directory = b\nend\n");
+  CHECK(parameters.output.directory == "b");
+  CHECK(parameters.given.at("Output/Directory") == "overlay:2");
+
+  const CaughtError overlay_twice = catch_input_error([] {
+    Parameters p;
+    p.read_string("subsection Output\n set Directory = a\nend\n",
+                  "subsection Output\n set Directory = b\n"
+                  " set Directory = c\nend\n");
+  });
+  CHECK(overlay_twice.code == exit_unknown_entry);
+}
+
+TEST_CASE("A misspelt entry or subsection is named with the closest "
+          "declared one",
+          "[parameters][errors]")
+{
+  CaughtError error =
+    error_reading("subsection Friction\n  set Coeficient = 0.3\nend\n");
+  CHECK(error.code == exit_unknown_entry);
+  CHECK(contains(error.message,
+                 "<Friction/Coeficient> is not an entry of subsection "
+                 "Friction; did you mean <Friction/Coefficient>?"));
+
+  // the right name in the wrong subsection
+  error = error_reading("subsection Material\n  set Radius = 2\nend\n");
+  CHECK(contains(error.message, "did you mean <Geometry/Radius>?"));
+
+  error = error_reading("subsection Frictoin\nend\n");
+  CHECK(error.code == exit_unknown_entry);
+  CHECK(contains(error.message,
+                 "<Frictoin> is not a subsection; did you mean <Friction>?"));
+
+  // nothing close: no guess
+  error = error_reading("subsection Material\n  set Colour = red\nend\n");
+  CHECK(contains(error.message, "is not an entry of subsection Material ("));
+}
+
+TEST_CASE("The closest match allows about one wrong letter in four",
+          "[parameters]")
+{
+  const std::vector<std::string> names = {"Coefficient", "Threshold", "Law"};
+  CHECK(closest_match("Coeficient", names) == "Coefficient");
+  CHECK(closest_match("coefficeint", names) == "Coefficient");
+  CHECK(closest_match("threshhold", names) == "Threshold");
+  CHECK(closest_match("Friction", names).empty());
+  CHECK(closest_match("Lae", names) == "Law"); // one edit is always a typo
+  CHECK(closest_match("Lbx", names).empty());
+}
+
+TEST_CASE("Every entry's pattern reads in words, and a pattern error says "
+          "the entry, the value and what is expected",
+          "[parameters][errors]")
+{
+  CHECK(pattern_in_words("[Double -1...0.5 (inclusive)]") ==
+        "a number from -1 to 0.5");
+  CHECK(pattern_in_words("[Double 0...MAX_DOUBLE (inclusive)]") ==
+        "a number >= 0");
+  CHECK(pattern_in_words("[Integer range 1...30 (inclusive)]") ==
+        "a whole number from 1 to 30");
+  CHECK(pattern_in_words("[Integer range 2...3 (inclusive)]") ==
+        "a whole number: 2 or 3");
+  CHECK(pattern_in_words("[Selection none|given|coulomb ]") ==
+        "one of: none, given, coulomb");
+  CHECK(pattern_in_words("[Bool]") == "true or false");
+
+  // every declared entry: no deal.II pattern text is left
+  ParameterHandler prm;
+  Parameters::declare_parameters(prm);
+  std::ostringstream json;
+  prm.print_parameters(json, ParameterHandler::JSON);
+  const std::string text    = json.str();
+  unsigned int      n_found = 0;
+  for (std::size_t at = text.find("\"pattern_description\"");
+       at != std::string::npos;
+       at = text.find("\"pattern_description\"", at + 1))
+    {
+      const std::size_t open = text.find('"', text.find(':', at)) + 1;
+      const std::string description =
+        text.substr(open, text.find("\"", open) - open);
+      INFO(description);
+      CHECK(pattern_in_words(description).find('[') == std::string::npos);
+      ++n_found;
+    }
+  CHECK(n_found > 40);
+
+  CaughtError error =
+    error_reading("subsection Geometry\n  set Subdivisions = 0, 4\nend\n");
+  CHECK(error.code == exit_invalid_value);
+  CHECK(contains(error.message,
+                 "Invalid value '0, 4' for <Geometry/Subdivisions>: expected "
+                 "a comma-separated list of 2 or 3 whole numbers >= 1 "
+                 "(parameters:2)"));
+  error = error_reading("subsection Friction\n  set Law = tresca\nend\n");
+  CHECK(contains(error.message,
+                 "Invalid value 'tresca' for <Friction/Law>: expected one "
+                 "of: coulomb, given, none"));
+}
+
+TEST_CASE("Overrides: --set changes an entry after the file, a malformed one "
+          "is a usage error, an unknown one is named",
+          "[parameters][errors]")
+{
+  const std::string scene =
+    dualcontact_test::test_file("../prm/paper_block.prm");
+  Parameters parameters;
+  parameters.read_file(scene,
+                       {"Friction/Coefficient=0.4",
+                        "Material/Poisson's ratio = 0.25"});
+  CHECK(parameters.friction.coefficient == "0.4");
+  CHECK(parameters.material.poissons_ratio == 0.25);
+  CHECK(parameters.given.at("Friction/Coefficient") == "--set");
+  CHECK(
+    contains(parameters.parameter_file, "--set \"Friction/Coefficient=0.4\""));
+  CHECK(contains(parameters.parameter_file, "set Coefficient"));
+
+  const auto error_with = [&](const std::string &assignment) {
+    return catch_input_error([&] {
+      Parameters p;
+      p.read_file(scene, {assignment});
+    });
+  };
+  CHECK(error_with("Friction/Coefficient 0.4").code == exit_usage);
+  CHECK(error_with("Coefficient=0.4").code == exit_usage);
+  CHECK(error_with("Friction/=0.4").code == exit_usage);
+  CHECK(error_with("Friction//Law=none").code == exit_usage);
+  const CaughtError unknown = error_with("Friction/Coeficient=0.4");
+  CHECK(unknown.code == exit_unknown_entry);
+  CHECK(contains(unknown.message, "did you mean <Friction/Coefficient>?"));
+  CHECK(error_with("Friction/Law=tresca").code == exit_invalid_value);
+}
+
+TEST_CASE("The parameters as read, in --print-parameters form, read back to "
+          "the same parameters",
+          "[parameters]")
+{
+  Parameters first;
+  first.read_file(dualcontact_test::test_file("../prm/hertz_friction.prm"),
+                  {"Friction/Coefficient=0.25",
+                   "Refinement/Refine fraction=0.5"});
+  Parameters second;
+  second.read_string(first.parameter_file);
+  CHECK(second.friction.coefficient == "0.25");
+  CHECK(second.geometry.pre_refinement_steps ==
+        first.geometry.pre_refinement_steps);
+  // the same listing, but for the header line naming the file
+  const auto listing = [](const std::string &text) {
+    return text.substr(text.find("# Listing of Parameters"));
+  };
+  CHECK(listing(second.parameter_file) == listing(first.parameter_file));
+  // the listing sets every entry, but only those off their default count as
+  // given: the same one warning (a refine fraction with global refinement)
+  CHECK(first.ineffective_entries().size() == 1);
+  CHECK(second.ineffective_entries().size() == 1);
+  CHECK(second.given.size() == first.given.size());
+}
+
+TEST_CASE("Mixed-up friction entries: the law without its own entry is an "
+          "error, an entry of another law a warning",
+          "[parameters][errors]")
+{
+  const std::string contact = "subsection Boundary conditions\n"
+                              "  set Conditions = 2: contact, 3: fixed\n"
+                              "end\n";
+  CaughtError       error =
+    error_reading(contact + "subsection Friction\n  set Law = given\n"
+                            "  set Coefficient = 0.3\nend\n");
+  REQUIRE(error.thrown);
+  CHECK(error.code == exit_inconsistent);
+  CHECK(contains(
+    error.message,
+    "The friction law 'given' needs <Friction/Threshold>, which "
+    "is not given (0 by default: no friction); "
+    "<Friction/Coefficient> (parameters:6) is for the law")); // 'coulomb' (and
+                                                              // others a test
+                                                              // registers)
+  CHECK(contains(error.message, "'coulomb'"));
+  error = error_reading(contact + "subsection Friction\n  set Law = coulomb\n"
+                                  "  set Threshold = 0.3\nend\n");
+  CHECK(error.code == exit_inconsistent);
+
+  Parameters parameters;
+  parameters.read_string(contact + "subsection Friction\n  set Law = given\n"
+                                   "  set Threshold = 0.1\n"
+                                   "  set Coefficient = 0.3\n"
+                                   "  set Threshold tolerance = 1e-8\nend\n");
+  const std::vector<std::string> warnings = parameters.ineffective_entries();
+  REQUIRE(warnings.size() == 2);
+  CHECK(contains(warnings[0],
+                 "<Friction/Coefficient> has no effect: the law "
+                 "'given' takes <Friction/Threshold>"));
+  CHECK(contains(warnings[1], "<Friction/Threshold tolerance> has no effect"));
+  CHECK(contains(warnings[1], "(parameters:8)"));
+}
+
+TEST_CASE("Entries without effect are listed once each, with the reason; a "
+          "scene that uses all it sets has none",
+          "[parameters]")
 {
   Parameters parameters;
-  parameters.read_string("subsection Output\n set Directory = a\nend\n"
-                         "subsection Output\n set Directory = b\nend\n");
-  REQUIRE(parameters.output.directory == "b");
+  parameters.read_string("subsection Geometry\n"
+                         "  set Radius = 2\n"
+                         "  set Pre-refinement distance = 0.1\n"
+                         "end\n"
+                         "subsection Boundary conditions\n"
+                         "  set Conditions = 2: fixed\n"
+                         "end\n"
+                         "subsection Foundation\n  set Point = 0, -1\nend\n"
+                         "subsection Friction\n  set Coefficient = 0.3\nend\n"
+                         "subsection Solver\n"
+                         "  set Uzawa tolerance = 1e-9\n"
+                         "  set Linear solver tolerance = 1e-12\n"
+                         "end\n"
+                         "subsection Refinement\n"
+                         "  set Number of cycles = 2\n"
+                         "  set Refine fraction = 0.2\n"
+                         "end\n"
+                         "subsection Exact solution\n"
+                         "  set Peak pressure = 3\n"
+                         "end\n");
+  const std::vector<std::string> warnings = parameters.ineffective_entries();
+  std::string                    all;
+  for (const std::string &w : warnings)
+    all += w + "\n";
+  INFO(all);
+  CHECK(warnings.size() == 7);
+  for (const std::string entry : {"<Geometry/Radius> has no effect: "
+                                  "<Geometry/Type> is 'rectangle'",
+                                  "<Geometry/Pre-refinement distance>",
+                                  "<Foundation/Point> has no effect: no "
+                                  "boundary id has the condition 'contact'",
+                                  "<Friction/Coefficient> has no effect: "
+                                  "<Friction/Law> is 'none'",
+                                  "<Solver/Uzawa tolerance>",
+                                  "<Refinement/Refine fraction> has no "
+                                  "effect: <Refinement/Strategy> is 'global'",
+                                  "<Exact solution/Peak pressure>"})
+    CHECK(contains(all, entry));
+  CHECK_FALSE(contains(all, "Linear solver tolerance"));
+
+  Parameters used;
+  used.read_file(dualcontact_test::test_file("../prm/hertz_friction.prm"));
+  CHECK(used.ineffective_entries().empty());
+}
+
+TEST_CASE("Degenerate geometry: a disc of radius 0 is an input error naming "
+          "<Geometry/Radius>",
+          "[parameters][errors]")
+{
+  for (const std::string radius : {"0", "0.0"})
+    {
+      const CaughtError error = error_reading(
+        "subsection Geometry\n  set Type = half disc\n  set Radius = " +
+        radius + "\nend\n");
+      REQUIRE(error.thrown);
+      CHECK(error.code == exit_invalid_value);
+      CHECK(contains(error.message, "<Geometry/Radius> must be positive"));
+    }
+  // a rectangle does not use the radius
+  CHECK_FALSE(
+    error_reading("subsection Geometry\n  set Radius = 0\nend\n").thrown);
 }
 
 TEST_CASE("Lame constants follow from E and nu (plane strain formulas)",

@@ -322,12 +322,13 @@ TEST_CASE("A body held only by contact and pulled away: no equilibrium, "
     temporary_directory("pulled_off", MPI_COMM_WORLD);
   Parameters parameters;
   parameters.read_string(
-    read_text(test_file("../prm/hertz.prm")) + one_cycle +
-    "\nsubsection Boundary conditions\n  set Tractions = 1: 0; "
-    "4.315374524161804\nend\nsubsection Geometry\n  set Pre-refinement "
-    "steps = 0\nend\nsubsection Refinement\n  set Initial global "
-    "refinement = 2\nend\nsubsection Output\n  set Directory = " +
-    directory + "\nend\n");
+    read_text(test_file("../prm/hertz.prm")),
+    one_cycle +
+      "\nsubsection Boundary conditions\n  set Tractions = 1: 0; "
+      "4.315374524161804\nend\nsubsection Geometry\n  set Pre-refinement "
+      "steps = 0\nend\nsubsection Refinement\n  set Initial global "
+      "refinement = 2\nend\nsubsection Output\n  set Directory = " +
+      directory + "\nend\n");
   std::ostringstream screen;
   CaughtError        error;
   {

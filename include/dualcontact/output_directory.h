@@ -1,0 +1,37 @@
+// The output folder of a run, made and tested before the mesh is built.
+#ifndef dualcontact_output_directory_h
+#define dualcontact_output_directory_h
+
+#include <deal.II/base/mpi.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dualcontact
+{
+  /**
+   * Makes the folder <Output/Directory> (and its missing parents) on rank 0
+   * and tests that a file can be written in it, before anything is
+   * computed: a folder that cannot be made is bad input found at once, not
+   * after the first solve. A run that fails before it wrote anything calls
+   * remove_if_unused(), so that bad input leaves no folder behind.
+   */
+  class OutputDirectory
+  {
+  public:
+    /** Throws InputError (exit_invalid_value) on every rank on failure. */
+    OutputDirectory(const std::string &directory, const MPI_Comm comm);
+
+    /** Remove the folders made here that are still empty (rank 0). */
+    void
+    remove_if_unused() const;
+
+  private:
+    const MPI_Comm comm;
+    // the folders that did not exist before, the deepest first
+    std::vector<std::filesystem::path> made;
+  };
+} // namespace dualcontact
+
+#endif

@@ -1,0 +1,82 @@
+// How large a run's finest mesh will be, and whether it fits in the memory
+// of the machine: checked before the mesh is built, so that a scene refined
+// far too often fails in a moment with a message instead of after minutes
+// with std::bad_alloc.
+#ifndef dualcontact_run_size_h
+#define dualcontact_run_size_h
+
+#include <deal.II/base/mpi.h>
+
+#include <dualcontact/parameters.h>
+
+#include <string>
+
+namespace dualcontact
+{
+  /** The estimated size of the finest mesh of a run. */
+  struct RunSize
+  {
+    unsigned int cycle  = 0;  // the cycle of the finest mesh (the last)
+    double       cells  = 0.; // active cells
+    double       dofs   = 0.; // degrees of freedom (Q1, dim per node)
+    double       memory = 0.; // peak resident memory of all ranks [bytes]
+  };
+
+  /**
+   * The size of the last cycle's mesh if the initial mesh (after the
+   * initial global refinement and the pre-refinement) has `initial_cells`
+   * cells: global refinement multiplies the cells by 2^dim per cycle,
+   * adaptive refinement by about 1 + (2^dim - 1) * <Refinement/Refine
+   * fraction> (coarsening ignored); a Q1 mesh has about (cells^(1/dim) +
+   * 1)^dim nodes (exact for a cube of n^dim cells). The memory follows from
+   * measurements (run_size.cc).
+   */
+  RunSize
+  estimate_run_size(const Parameters  &parameters,
+                    const double       initial_cells,
+                    const unsigned int n_ranks);
+
+  /**
+   * The memory the run may use [bytes]: the physical memory (MemTotal of
+   * /proc/meminfo, or a lower cgroup limit) of each node the ranks of
+   * `comm` run on, summed over the nodes. The environment variable
+   * DUALCONTACT_MEMORY_GB, if set, replaces it (a share of a node, or a
+   * test).
+   */
+  double
+  available_memory(const MPI_Comm comm);
+
+  /**
+   * Refuses a run that would not fit: check() throws InputError
+   * (exit_inconsistent) naming the entries that make the mesh large, the
+   * estimate and the memory; warn() writes one line to std::cerr (rank 0)
+   * when the estimate exceeds half of the memory.
+   */
+  class RunSizeCheck
+  {
+  public:
+    RunSizeCheck(const Parameters &parameters, const MPI_Comm comm);
+
+    /**
+     * `initial_cells` is what the initial mesh will have at least (before
+     * the pre-refinement, or before one of its steps), or exactly (built).
+     */
+    void
+    check(const double initial_cells, const bool exact) const;
+
+    /** Warn if the run needs more than half of the memory. */
+    void
+    warn(const double initial_cells) const;
+
+  private:
+    std::string
+    describe(const RunSize &size, const bool exact) const;
+
+    const Parameters  &parameters;
+    const MPI_Comm     comm;
+    const unsigned int n_ranks;
+    const double       memory;
+  };
+} // namespace dualcontact
+
+#endif

@@ -1,0 +1,66 @@
+#include <deal.II/base/mpi.h>
+
+#include <dualcontact/input_error.h>
+#include <dualcontact/output_directory.h>
+
+#include <unistd.h>
+
+#include <fstream>
+
+namespace dualcontact
+{
+  OutputDirectory::OutputDirectory(const std::string &directory,
+                                   const MPI_Comm     comm)
+      : comm(comm)
+  {
+    namespace fs = std::filesystem;
+    std::string problem;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code error;
+        const fs::path  folder = fs::absolute(directory, error);
+        for (fs::path p = folder; !p.empty() && !fs::exists(p, error);
+             p          = p.parent_path())
+          {
+                     made.push_back(p);
+                     if (p == p.parent_path())
+              break;
+          }
+        fs::create_directories(folder, error);
+        if (error)
+          problem = error.message();
+        else
+          {
+            // a folder may exist and still refuse files (permissions, a
+            // read-only file system)
+            const fs::path probe =
+              folder / (".dualcontact_write_test_" + std::to_string(getpid()));
+            const bool written = static_cast<bool>(std::ofstream(probe) << "");
+            fs::remove(probe, error);
+            if (!written)
+              problem = "no file can be written in it";
+          }
+        if (!problem.empty())
+          remove_if_unused();
+      }
+    problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw InputError("Cannot make or write the output folder '" + directory +
+                         "' given by <Output/Directory>: " + problem + ".",
+                       exit_invalid_value);
+  }
+
+  void
+  OutputDirectory::remove_if_unused() const
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::error_code error;
+    for (const std::filesystem::path &folder : made)
+      if (std::filesystem::is_directory(folder, error) &&
+          std::filesystem::is_empty(folder, error))
+        std::filesystem::remove(folder, error);
+      else
+        break;
+  }
+} // namespace dualcontact

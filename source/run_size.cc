@@ -1,0 +1,214 @@
+#include <dualcontact/input_error.h>
+#include <dualcontact/run_size.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // Peak resident memory (column memory_mb of cycles.csv, VmHWM summed
+    // over the ranks) of shipped scenes refined further, one rank, measured
+    // on the development machine (deal.II 9.4, Trilinos ML):
+    //   2D prm/paper_block.prm (5 global cycles): 374 MiB at 103,362 DoFs,
+    //      976 MiB at 411,522 DoFs: 2049 bytes per DoF, 172 MiB at 0 DoFs;
+    //   2D prm/hertz.prm (5 global cycles): 756 MiB at 303,362 DoFs,
+    //      2551 MiB at 1,207,298 DoFs: 2083 bytes per DoF, 153 MiB at 0;
+    //   3D a 2 x 2 x 1 box on the foundation (4 x 4 x 2 cells, sliders on
+    //      x = 0 and y = 0, top pressure 1; 5 global cycles): 525 MiB at
+    //      55,539 DoFs, 3043 MiB at 418,275 DoFs: 7278 bytes per DoF,
+    //      140 MiB at 0;
+    //   prm/paper_block.prm on 2 ranks: 178 MiB per rank at 0 DoFs.
+    // doc/robustness.md §9 found 2.1 kB per DoF at 4.8 million DoFs (2D,
+    // 2 ranks). Rounded up: the check is to refuse what cannot fit, not to
+    // predict the peak to the megabyte.
+    constexpr double bytes_per_dof_2d = 2100.;
+    constexpr double bytes_per_dof_3d = 7300.;
+    constexpr double bytes_per_rank   = 180. * 1024. * 1024.;
+    constexpr double gigabyte         = 1024. * 1024. * 1024.;
+
+    std::string
+    number(const double x)
+    {
+      std::ostringstream out;
+      out.precision(x < 1e6 ? 6 : 2);
+      if (x >= 1e6)
+        out << std::scientific;
+      out << (x < 1e6 ? std::round(x) : x);
+      return out.str();
+    }
+
+    std::string
+    gigabytes(const double bytes)
+    {
+      std::ostringstream out;
+      out.precision(bytes < 1e3 * gigabyte ? 3 : 2);
+      if (bytes >= 1e3 * gigabyte)
+        out << std::scientific;
+      out << bytes / gigabyte << " GB";
+      return out.str();
+    }
+
+    // The first number of `file` after `key` (0 if there is none).
+    double
+    read_number(const std::string &file, const std::string &key = "")
+    {
+      std::ifstream in(file);
+      std::string   line;
+      while (std::getline(in, line))
+        if (line.compare(0, key.size(), key) == 0)
+          {
+            std::istringstream values(line.substr(key.size()));
+            double             value = 0;
+            values >> value;
+            return values ? value : 0.;
+          }
+      return 0.;
+    }
+
+    // MemTotal, or the container's limit (cgroup v2 or v1) if it is lower.
+    double
+    node_memory()
+    {
+      double memory = read_number("/proc/meminfo", "MemTotal:") * 1024.;
+      if (memory <= 0.)
+        memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
+                 static_cast<double>(sysconf(_SC_PAGESIZE));
+      for (const char *limit : {"/sys/fs/cgroup/memory.max",
+                                "/sys/fs/cgroup/memory/memory.limit_in_bytes"})
+        {
+          const double value = read_number(limit);
+          if (value > 0. && value < memory)
+            memory = value;
+        }
+      return memory;
+    }
+
+    std::string
+    setting(const std::string &entry, const std::string &value)
+    {
+      return "<" + entry + "> (" + value + ")";
+    }
+
+    // the entries that set the size of the finest mesh, with their values
+    std::string
+    entries_driving_size(const Parameters &parameters)
+    {
+      const GeometryParameters   &g = parameters.geometry;
+      const RefinementParameters &r = parameters.refinement;
+      std::vector<std::string>    entries;
+      if (g.type == GeometryType::rectangle)
+        {
+          std::string n;
+          for (const unsigned int s : g.subdivisions)
+            n += (n.empty() ? "" : ", ") + std::to_string(s);
+          entries.push_back(setting("Geometry/Subdivisions", n));
+        }
+      if (r.initial_global_refinement > 0)
+        entries.push_back(setting("Refinement/Initial global refinement",
+                                  std::to_string(r.initial_global_refinement)));
+      if (g.pre_refinement_steps > 0)
+        entries.push_back(setting("Geometry/Pre-refinement steps",
+                                  std::to_string(g.pre_refinement_steps)));
+      if (r.n_cycles > 1)
+        entries.push_back(
+          setting("Refinement/Number of cycles", std::to_string(r.n_cycles)));
+      if (r.n_cycles > 1 && r.strategy != RefinementStrategy::global)
+        entries.push_back(
+          setting("Refinement/Refine fraction", number(r.refine_fraction)));
+      std::string text;
+      for (const std::string &entry : entries)
+        text += (text.empty() ? "" : ", ") + entry;
+      return text;
+    }
+  } // namespace
+
+  RunSize
+  estimate_run_size(const Parameters  &parameters,
+                    const double       initial_cells,
+                    const unsigned int n_ranks)
+  {
+    const unsigned int          dim        = parameters.geometry.dimension;
+    const double                children   = std::pow(2., dim);
+    const RefinementParameters &refinement = parameters.refinement;
+    const double growth = refinement.strategy == RefinementStrategy::global ?
+                            children :
+                            1. + (children - 1.) * refinement.refine_fraction;
+
+    RunSize size;
+    size.cycle         = refinement.n_cycles - 1;
+    size.cells         = initial_cells * std::pow(growth, size.cycle);
+    const double nodes = std::pow(std::pow(size.cells, 1. / dim) + 1., dim);
+    size.dofs          = dim * nodes;
+    size.memory        = n_ranks * bytes_per_rank +
+                  (dim == 2 ? bytes_per_dof_2d : bytes_per_dof_3d) * size.dofs;
+    return size;
+  }
+
+  double
+  available_memory(const MPI_Comm comm)
+  {
+    if (const char *limit = std::getenv("DUALCONTACT_MEMORY_GB"))
+      return std::atof(limit) * gigabyte;
+    // one rank per node counts its node's memory
+    MPI_Comm node;
+    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    const bool first_on_node = Utilities::MPI::this_mpi_process(node) == 0;
+    MPI_Comm_free(&node);
+    return Utilities::MPI::sum(first_on_node ? node_memory() : 0., comm);
+  }
+
+  RunSizeCheck::RunSizeCheck(const Parameters &parameters, const MPI_Comm comm)
+      : parameters(parameters)
+      , comm(comm)
+      , n_ranks(Utilities::MPI::n_mpi_processes(comm))
+      , memory(available_memory(comm))
+  {}
+
+  void
+  RunSizeCheck::check(const double initial_cells, const bool exact) const
+  {
+    const RunSize size = estimate_run_size(parameters, initial_cells, n_ranks);
+    if (size.memory > memory)
+      throw InputError("The scene is too large for the memory of this "
+                       "machine: " +
+                         describe(size, exact) + "; make the mesh coarser (" +
+                         entries_driving_size(parameters) + ").",
+                       exit_inconsistent);
+  }
+
+  void
+  RunSizeCheck::warn(const double initial_cells) const
+  {
+    const RunSize size = estimate_run_size(parameters, initial_cells, n_ranks);
+    if (size.memory > 0.5 * memory &&
+        Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cerr << "dualcontact: warning: the run needs more than half of "
+                   "the memory of this machine: "
+                << describe(size, true) << "." << std::endl;
+  }
+
+  std::string
+  RunSizeCheck::describe(const RunSize &size, const bool exact) const
+  {
+    return "its finest mesh (cycle " + std::to_string(size.cycle) +
+           ") would have " + (exact ? "about " : "at least ") +
+           number(size.cells) + " cells and " + number(size.dofs) +
+           " DoFs and need " + (exact ? "about " : "at least ") +
+           gigabytes(size.memory) + " of the " + gigabytes(memory) +
+           (std::getenv("DUALCONTACT_MEMORY_GB") ?
+              " that DUALCONTACT_MEMORY_GB allows" :
+              " the machine has") +
+           " (" + std::to_string(n_ranks) +
+           (n_ranks == 1 ? " rank)" : " ranks)");
+  }
+} // namespace dualcontact
