@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dualcontact
@@ -45,7 +45,7 @@ namespace dualcontact
     const double tolerance = 1e-8 * scene.characteristic_length();
     // the extreme signed distances of all vertices and of the contact
     // boundary's vertices from the plane (> 0 on the body's side)
-    double highest = -std::numeric_limits<double>::max();
+    double highest        = -std::numeric_limits<double>::max();
     double lowest_contact = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -147,24 +147,24 @@ namespace dualcontact
                 }
             }
         }
-    const MPI_Comm comm =
-      dof_handler.get_triangulation().get_communicator();
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     figures.max_displacement = Utilities::MPI::max(max_u, comm);
     figures.min_initial_gap  = Utilities::MPI::min(lowest_contact, comm);
     // the deepest point and its id, over the ranks
     const double global_deepest = Utilities::MPI::max(deepest, comm);
     figures.penetration         = global_deepest;
-    figures.penetrating_id      = Utilities::MPI::min(
-      deepest == global_deepest && deepest > 0. ?
-        deepest_id :
-        std::numeric_limits<unsigned int>::max(),
-      comm);
+    figures.penetrating_id =
+      Utilities::MPI::min(deepest == global_deepest && deepest > 0. ?
+                            deepest_id :
+                            std::numeric_limits<unsigned int>::max(),
+                          comm);
 
     if (contact && figures.penetration > 1e-8 * length)
       {
         const std::string text =
           describe(figures.penetrating_id,
-                   scene.parameters.boundary.condition(figures.penetrating_id)) +
+                   scene.parameters.boundary.condition(
+                     figures.penetrating_id)) +
           " passes through the foundation by " +
           format_number(figures.penetration) + " (" +
           plain(100. * figures.penetration / length) +

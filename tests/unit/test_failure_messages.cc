@@ -57,17 +57,18 @@ TEST_CASE("A slowly converging Uzawa iteration names its last changes and "
                                       "  set Number of cycles = 1\n"
                                       "end\n");
   INFO(message);
-  CHECK(at(message, "The Uzawa iteration (loop 2) did not converge in 20 "
-                    "steps (<Solver/Maximum Uzawa steps>)") !=
-        std::string::npos);
+  CHECK(at(message,
+           "The Uzawa iteration (loop 2) did not converge in 20 "
+           "steps (<Solver/Maximum Uzawa steps>)") != std::string::npos);
   CHECK(at(message, "d(l1) ") != std::string::npos);
   CHECK(at(message, "d(l2) ") != std::string::npos);
   CHECK(at(message, "contraction rate ") != std::string::npos);
   // the first cause: slow but steady, with an estimate of the steps left
   CHECK(at(message, "(1) slow but steady convergence, about ") !=
         std::string::npos);
-  CHECK(at(message, "<Solver/Augmentation parameter> (a larger r contracts "
-                    "faster)") != std::string::npos);
+  CHECK(at(message,
+           "<Solver/Augmentation parameter> (a larger r contracts "
+           "faster)") != std::string::npos);
   // the violation falls steadily: not "the contact condition cannot be met"
   CHECK(at(message, "cannot be met") == std::string::npos);
 }
@@ -89,8 +90,9 @@ TEST_CASE("CG failing on a nearly incompressible material names the material "
   INFO(message);
   CHECK(at(message, "CG did not converge in 30 iterations") !=
         std::string::npos);
-  CHECK(at(message, "(1) a nearly incompressible material (<Material/"
-                    "Poisson's ratio> = 0.4999999") != std::string::npos);
+  CHECK(at(message,
+           "(1) a nearly incompressible material (<Material/"
+           "Poisson's ratio> = 0.4999999") != std::string::npos);
   CHECK(at(message, "(3) too few iterations allowed") != std::string::npos);
 
   // at nu = 0.3 the material is not suspected
