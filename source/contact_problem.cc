@@ -332,7 +332,7 @@ namespace dualcontact
     figures.chi               = chi;
     figures.n_contact_nodes   = contact_set.n_global_nodes();
     figures.n_hanging_contact = contact_set.n_hanging_nodes();
-    // the applied load toward the foundation, which the contact force
+    // the applied load toward the obstacle, which the contact force
     // balances when nothing else holds the body in that direction (not
     // b . n: b also holds the lifting of prescribed displacements)
     for (unsigned int c = 0; c < dim; ++c)
@@ -432,9 +432,12 @@ namespace dualcontact
     balance.load_away   = net_load(m);
 
     // N / |Gamma_C| if only friction holds a tangential load and N is known
-    double pressure = 0.;
+    // (on a plane: a curved obstacle also holds tangential loads by its
+    // normal pressure)
+    double     pressure = 0.;
+    const bool plane    = scene.obstacle()->is_plane();
     for (const Tensor<1, dim> &t : contact_set.tangents)
-      if (scene.translation_is_free(t, triangulation))
+      if (plane && scene.translation_is_free(t, triangulation))
         {
           const double load = std::abs(net_load(t));
           balance.tangential_loads.push_back(load);
@@ -467,27 +470,27 @@ namespace dualcontact
   {
     TimerOutput::Scope t(computing_timer, "measure contact zone");
     ContactZoneFigures figures;
-    double             force = 0, peak = 0;
-    Tensor<1, dim - 1> tangential;
+    double                                 force = 0, peak = 0;
+    Tensor<1, dim>                         on_obstacle;
     std::vector<std::pair<double, double>> local; // (t, l1)
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
-        const double m = contact_set.nodes[s].weight;
-        force += m * contact_set.l1[s];
-        tangential += m * contact_set.l2[s];
+        force += contact_set.nodes[s].weight * contact_set.l1[s];
+        on_obstacle += contact_set.nodal_force(s);
         peak = std::max(peak, contact_set.l1[s]);
         local.emplace_back(contact_set.nodes[s].position * contact_set.tangent,
                            contact_set.l1[s]);
       }
     figures.contact_force = Utilities::MPI::sum(force, mpi_communicator);
-    for (unsigned int k = 0; k < dim - 1; ++k)
-      tangential[k] = Utilities::MPI::sum(tangential[k], mpi_communicator);
-    figures.tangential_force = tangential.norm();
-    figures.max_pressure     = Utilities::MPI::max(peak, mpi_communicator);
-    // the force of the foundation on the body: -sum_s m_s (l1_s n + T l2_s)
-    Tensor<1, dim> resultant = -figures.contact_force * contact_set.normal;
-    for (unsigned int k = 0; k < dim - 1; ++k)
-      resultant -= tangential[k] * contact_set.tangents[k];
+    for (unsigned int c = 0; c < dim; ++c)
+      on_obstacle[c] = Utilities::MPI::sum(on_obstacle[c], mpi_communicator);
+    // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s),
+    // and its part in the tangent plane of Gamma_C's mean direction
+    const Tensor<1, dim> resultant = -on_obstacle;
+    figures.tangential_force =
+      (resultant - (resultant * contact_set.normal) * contact_set.normal)
+        .norm();
+    figures.max_pressure = Utilities::MPI::max(peak, mpi_communicator);
     for (unsigned int c = 0; c < dim; ++c)
       figures.resultant[c] = resultant[c];
 

@@ -8,6 +8,7 @@
 #include <dualcontact/input_error.h>
 
 #include <map>
+#include <tuple>
 
 namespace dualcontact
 {
@@ -25,22 +26,7 @@ namespace dualcontact
     const IndexSet           &owned = dof_handler.locally_owned_dofs();
     const auto contact_ids = scene.ids_with(BoundaryCondition::contact);
 
-    normal = -scene.foundation_normal;
-    // an orthonormal tangent basis: 2D t = (-n_2, n_1); 3D by Gram-Schmidt
-    if constexpr (dim == 2)
-      {
-        tangents[0][0] = -normal[1];
-        tangents[0][1] = normal[0];
-      }
-    else
-      {
-        Tensor<1, dim> e;
-        e[std::abs(normal[0]) < 0.9 ? 0 : 1] = 1.;
-        Tensor<1, dim> t1                    = e - (e * normal) * normal;
-        tangents[0]                          = t1 / t1.norm();
-        tangents[1] = cross_product_3d(normal, tangents[0]);
-      }
-    tangent = tangents[0];
+    obstacle = &scene.obstacle();
 
     // Weights m_s = int_{Gamma_C} phi_s, with the weight of hanging nodes
     // handed to their masters. Every component carries the same weight.
@@ -94,7 +80,8 @@ namespace dualcontact
     weights.compress(VectorOperation::add);
 
     nodes.clear();
-    types::global_dof_index hanging = 0;
+    types::global_dof_index hanging   = 0;
+    unsigned int            no_normal = 0;
     for (auto &[key, node] : candidates)
       {
         if (!owned.is_element(key))
@@ -111,8 +98,34 @@ namespace dualcontact
           continue;
         node.weight = weights[key];
         node.gap0   = scene.initial_gap(node.position);
+        std::tie(node.normal, node.tangents) = basis_at(node.position);
+        if (!(node.normal.norm() > 0.5))
+          ++no_normal;
         nodes.push_back(node);
       }
+    if (Utilities::MPI::sum(no_normal, comm) > 0)
+      throw InputError(
+        "The obstacle has no usable normal at " +
+          std::to_string(Utilities::MPI::sum(no_normal, comm)) +
+          " contact node(s): the gradient of its distance is zero or not "
+          "finite there (<Obstacle/" +
+          std::string(scene.obstacle()->name() == "distance" ? "Distance" :
+                                                               "Center") +
+          ">).",
+        exit_invalid_value);
+
+    // the mean direction of Gamma_C
+    Tensor<1, dim> mean;
+    for (const auto &node : nodes)
+      mean += node.weight * node.normal;
+    for (unsigned int d = 0; d < dim; ++d)
+      mean[d] = Utilities::MPI::sum(mean[d], comm);
+    if (mean.norm() > 0)
+      normal = mean / mean.norm();
+    else // no contact node at all, or normals that cancel: the obstacle's
+      normal = -scene.obstacle().normal(scene.center());
+    tangents = tangent_basis(normal);
+    tangent  = tangents[0];
 
     l1.assign(nodes.size(), 0.);
 
@@ -146,6 +159,14 @@ namespace dualcontact
     for (const auto &node : nodes)
       local_measure += node.weight;
     measure_ = Utilities::MPI::sum(local_measure, comm);
+  }
+
+  template <int dim>
+  std::pair<Tensor<1, dim>, std::array<Tensor<1, dim>, dim - 1>>
+  ContactSet<dim>::basis_at(const Point<dim> &x) const
+  {
+    const Tensor<1, dim> n = -obstacle->normal(x);
+    return {n, tangent_basis(n)};
   }
 
   template <int dim>

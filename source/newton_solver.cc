@@ -72,13 +72,14 @@ namespace dualcontact
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
         const double   m     = contact.nodes[s].weight;
-        Tensor<1, dim> force = (m * positive_part(z[s])) * contact.normal;
+        Tensor<1, dim> force =
+          (m * positive_part(z[s])) * contact.nodes[s].normal;
         if (contact.friction)
           {
             const Tensor<1, dim - 1> q =
               project_onto_disc(y[s], contact.threshold[s]);
             for (unsigned int k = 0; k < dim - 1; ++k)
-              force += (m * q[k]) * contact.tangents[k];
+              force += (m * q[k]) * contact.nodes[s].tangents[k];
           }
         if (force.norm() == 0.)
           continue;
@@ -98,7 +99,6 @@ namespace dualcontact
   void
   NewtonSolver<dim>::assemble_newton_matrix(const ContactSet<dim> &contact)
   {
-    const Tensor<1, dim>                &n = contact.normal;
     FullMatrix<double>                   local_matrix(dim, dim);
     std::vector<types::global_dof_index> local_dofs(dim);
     newton_matrix.copy_from(system->stiffness);
@@ -106,8 +106,10 @@ namespace dualcontact
       newton_matrix.add(system->proximal_correction(), system->mass);
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
-        const double m_r = contact.nodes[s].weight * system->r;
-        local_matrix     = 0;
+        const double                               m_r = contact.nodes[s].weight * system->r;
+        const Tensor<1, dim>                      &n   = contact.nodes[s].normal;
+        const std::array<Tensor<1, dim>, dim - 1> &t   = contact.nodes[s].tangents;
+        local_matrix                                   = 0;
         // normal part, where z >= 0 (at z = 0 the generalised derivative may
         // take either branch; the active one spares a free fall)
         if (z[s] >= 0.)
@@ -121,12 +123,12 @@ namespace dualcontact
             {
               Tensor<1, dim - 1> eb;
               for (unsigned int k = 0; k < dim - 1; ++k)
-                eb[k] = contact.tangents[k][b];
+                eb[k] = t[k][b];
               const Tensor<1, dim - 1> Deb =
                 projection_derivative(y[s], contact.threshold[s], eb);
               for (unsigned int a = 0; a < dim; ++a)
                 for (unsigned int k = 0; k < dim - 1; ++k)
-                  local_matrix(a, b) += m_r * contact.tangents[k][a] * Deb[k];
+                  local_matrix(a, b) += m_r * t[k][a] * Deb[k];
             }
         if (local_matrix.frobenius_norm() == 0.)
           continue;

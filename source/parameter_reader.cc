@@ -686,9 +686,10 @@ namespace dualcontact
             for (const auto &[sub, known] : all)
               entry_names.push_back(known);
             const std::string match = closest_match(entry, entry_names);
+            // the same name may be in several subsections: name them all
             for (const auto &[sub, known] : all)
               if (!match.empty() && known == match)
-                guess = sub + "/" + known;
+                guess += (guess.empty() ? "" : "> or <") + sub + "/" + known;
           }
         throw InputError("<" + name + "> is not an entry of " +
                            (subsections.empty() ?

@@ -3,6 +3,7 @@
 
 #include <dualcontact/friction_law.h>
 #include <dualcontact/input_error.h>
+#include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_reader.h>
 #include <dualcontact/parameters.h>
 
@@ -451,30 +452,92 @@ namespace dualcontact
   // ------------------------------------------------------------ Foundation
 
   void
-  FoundationParameters::declare_parameters(ParameterHandler &prm)
+  ObstacleParameters::declare_parameters(ParameterHandler &prm)
   {
+    // the plane keeps its historical subsection, so that older scenes run
     prm.enter_subsection("Foundation");
     prm.declare_entry("Point",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
-                      "A point p on the boundary of the rigid foundation (a "
-                      "half-space) [length].");
+                      "Plane obstacle (the foundation, a half-space): a point "
+                      "p on its boundary [length].");
     prm.declare_entry(
       "Normal",
       "0, 1",
       Patterns::List(Patterns::Double(), 2, 3),
-      "Normal m of the foundation's boundary, pointing from the "
-      "foundation into the body [-]. Normalised on input; must "
-      "not be zero. The initial gap is g0(x) = (x - p).m.");
+      "Plane obstacle: the normal m of its boundary, pointing from the "
+      "foundation into the body [-]. Normalised on input; must not be zero. "
+      "The initial gap is g0(x) = (x - p).m.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Obstacle");
+    std::string names;
+    for (const std::string &name : obstacle_names())
+      names += (names.empty() ? "" : "|") + name;
+    prm.declare_entry(
+      "Type",
+      "plane",
+      Patterns::Selection(names),
+      "The rigid obstacle on Gamma_C. 'plane': a half-space, given in "
+      "subsection Foundation. 'cylinder': a disc in 2D, a circular cylinder "
+      "along <Obstacle/Axis> in 3D, of the given centre and radius, the "
+      "body outside it (an indenter). 'sphere' (3D; a disc in 2D): centre "
+      "and radius, the body outside. 'distance': the surface d(x) = 0 of the "
+      "signed-distance expression <Obstacle/Distance>, d > 0 where the body "
+      "is; the normal is its gradient, normalised. Gap and normal are taken "
+      "at each contact node's position before deformation (small "
+      "displacements).");
+    prm.declare_entry("Center",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Cylinder, sphere: the centre c (for a 3D cylinder, a "
+                      "point on its axis) [length].");
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(0., Patterns::Double::max_double_value),
+                      "Cylinder, sphere: the radius R [length]. Must be "
+                      "positive.");
+    prm.declare_entry("Axis",
+                      "0, 0, 1",
+                      Patterns::List(Patterns::Double(), 3, 3),
+                      "Cylinder in 3D: the direction of its axis [-]. "
+                      "Normalised on input; must not be zero.");
+    prm.declare_entry(
+      "Distance",
+      "",
+      Patterns::Anything(),
+      "Distance: the signed distance d(x, y) (2D) or d(x, y, z) (3D) from "
+      "the obstacle's surface [length], > 0 where the body is, in the "
+      "function parser's syntax (constants E, nu, L as elsewhere). Its "
+      "gradient should have length 1 near the surface; it is computed by "
+      "central differences and normalised. Example: a flat punch of "
+      "half-width 0.1 whose face lies on y = 1, above the body: "
+      "'max(1 - y, abs(x) - 0.1)'.");
+    prm.declare_entry("Displacement",
+                      "",
+                      Patterns::List(Patterns::Double(), 0, 3),
+                      "A rigid translation U of the obstacle, prescribed "
+                      "(e.g. an indentation depth: U = 0, -0.01 moves it "
+                      "down by 0.01) [length], one value per dimension; "
+                      "empty: it stays where it is. The force on the "
+                      "obstacle is reported.");
     prm.leave_subsection();
   }
 
   void
-  FoundationParameters::parse_parameters(ParameterHandler &prm)
+  ObstacleParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Foundation");
     point  = parse_doubles(prm.get("Point"));
     normal = parse_doubles(prm.get("Normal"));
+    prm.leave_subsection();
+    prm.enter_subsection("Obstacle");
+    type         = prm.get("Type");
+    center       = parse_doubles(prm.get("Center"));
+    radius       = prm.get_double("Radius");
+    axis         = parse_doubles(prm.get("Axis"));
+    distance     = prm.get("Distance");
+    displacement = parse_doubles(prm.get("Displacement"));
     prm.leave_subsection();
   }
 
@@ -904,7 +967,7 @@ namespace dualcontact
     MaterialParameters::declare_parameters(prm);
     BoundaryParameters::declare_parameters(prm);
     LoadParameters::declare_parameters(prm);
-    FoundationParameters::declare_parameters(prm);
+    ObstacleParameters::declare_parameters(prm);
     FrictionParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     RefinementParameters::declare_parameters(prm);
@@ -919,7 +982,7 @@ namespace dualcontact
     material.parse_parameters(prm);
     boundary.parse_parameters(prm);
     loads.parse_parameters(prm);
-    foundation.parse_parameters(prm);
+    obstacle.parse_parameters(prm);
     friction.parse_parameters(prm);
     solver.parse_parameters(prm);
     refinement.parse_parameters(prm);
@@ -1054,15 +1117,45 @@ namespace dualcontact
 
     if (!boundary.ids_with(BoundaryCondition::contact).empty())
       {
-        need_dim(foundation.point, "Foundation/Point");
-        need_dim(foundation.normal, "Foundation/Normal");
-        double norm = 0;
-        for (const double c : foundation.normal)
-          norm += c * c;
-        if (!(std::sqrt(norm) > 1e-12))
-          throw InputError("The entry <Foundation/Normal> must not be the "
-                           "zero vector.",
-                           exit_invalid_value);
+        if (obstacle.type == "plane")
+          {
+            need_dim(obstacle.point, "Foundation/Point");
+            need_dim(obstacle.normal, "Foundation/Normal");
+            double norm = 0;
+            for (const double c : obstacle.normal)
+              norm += c * c;
+            if (!(std::sqrt(norm) > 1e-12))
+              throw InputError("The entry <Foundation/Normal> must not be the "
+                               "zero vector.",
+                               exit_invalid_value);
+          }
+        else if (obstacle.type == "distance")
+          {
+            if (obstacle.distance.find_first_not_of(" \t") ==
+                std::string::npos)
+              throw InputError("The entry <Obstacle/Type> is 'distance' but "
+                               "<Obstacle/Distance> gives no expression.",
+                               exit_inconsistent);
+          }
+        else
+          {
+            need_dim(obstacle.center, "Obstacle/Center");
+            if (!(obstacle.radius > 0.))
+              throw InputError("The entry <Obstacle/Radius> must be positive.",
+                               exit_invalid_value);
+            if (obstacle.type == "cylinder" && dim == 3)
+              {
+                double norm = 0;
+                for (const double c : obstacle.axis)
+                  norm += c * c;
+                if (!(std::sqrt(norm) > 1e-12))
+                  throw InputError("The entry <Obstacle/Axis> must not be the "
+                                   "zero vector.",
+                                   exit_invalid_value);
+              }
+          }
+        if (!obstacle.displacement.empty())
+          need_dim(obstacle.displacement, "Obstacle/Displacement");
       }
     else if (friction.law != "none")
       throw InputError("The entry <Friction/Law> asks for friction, but no "

@@ -45,7 +45,8 @@ namespace dualcontact
                               fe,
                               quadrature,
                               update_values | update_gradients |
-                                update_normal_vectors | update_JxW_values);
+                                update_normal_vectors | update_JxW_values |
+                                update_quadrature_points);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
     std::vector<Tensor<1, dim>>          lambda(quadrature.size());
@@ -72,11 +73,12 @@ namespace dualcontact
                       lame_l * trace(strain[q]) * unit_symmetric_tensor<dim>() +
                       2. * lame_m * strain[q];
                     // lambda[q]: (l1, l2_1, .., l2_{dim-1}) interpolated
+                    const auto [n, t] =
+                      contact.basis_at(fe_face.quadrature_point(q));
                     Tensor<1, dim> residual =
-                      stress * fe_face.normal_vector(q) +
-                      lambda[q][0] * contact.normal;
+                      stress * fe_face.normal_vector(q) + lambda[q][0] * n;
                     for (unsigned int k = 0; k < dim - 1; ++k)
-                      residual += lambda[q][k + 1] * contact.tangents[k];
+                      residual += lambda[q][k + 1] * t[k];
                     integral += residual.norm_square() * fe_face.JxW(q);
                   }
                 sum += cell->face(f)->diameter() * integral / (E * E);

@@ -24,71 +24,72 @@
 
 namespace dualcontact
 {
+  /** Parse "a; b" into a vector-valued function, naming the entry on error.
+   */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_function(const std::string        &expression,
+                const unsigned int        n_components,
+                const MaterialParameters &material,
+                const std::string        &entry,
+                const double              length)
+  {
+    const std::map<std::string, double> constants = {
+      {"pi", numbers::PI},
+      {"E", material.youngs_modulus},
+      {"nu", material.poissons_ratio},
+      {"lambda", material.lambda()},
+      {"mu", material.mu()}};
+    const std::string variables = dim == 2 ? "x,y" : "x,y,z";
+
+    // a vector of zeros of either dimension, such as the default "0; 0",
+    // is zero in 2D and 3D alike
+    const auto n_given = Utilities::split_string_list(expression, ';').size();
+    if (n_components > 1 && n_given > 1 && n_given <= 3 &&
+        is_zero_expression(expression))
+      return std::make_unique<Functions::ZeroFunction<dim>>(n_components);
+    if (n_given != n_components)
+      throw InputError("The entry <" + entry + "> needs " +
+                         std::to_string(n_components) +
+                         " expression(s) separated by ';', not " +
+                         std::to_string(n_given) + ": '" + expression + "'.",
+                       exit_invalid_value);
+
+    // Gradients (for H1 errors) by fourth-order differences with a step
+    // relative to the body's size.
+    auto function =
+      std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-4 * length);
+    function->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
+    // deal.II prints muparser's diagnostics on std::cerr before it
+    // throws; the user gets our one-line message instead.
+    std::ostringstream    muparser_diagnostics;
+    std::streambuf *const cerr_buffer =
+      std::cerr.rdbuf(muparser_diagnostics.rdbuf());
+    const auto restore_cerr = [cerr_buffer]() {
+      std::cerr.rdbuf(cerr_buffer);
+    };
+    try
+      {
+        function->initialize(variables, expression, constants);
+        // muparser may defer some errors to the first evaluation
+        Vector<double> values(n_components);
+        function->vector_value(Point<dim>(), values);
+      }
+    catch (const std::exception &)
+      {
+        restore_cerr();
+        throw InputError("The entry <" + entry +
+                           "> is not a valid expression in " + variables +
+                           ": '" + expression + "'.",
+                         exit_invalid_value);
+      }
+    restore_cerr();
+    return function;
+  }
+
+
   namespace
   {
-    /** Parse "a; b" into a vector-valued function, naming the entry on error.
-     */
-    template <int dim>
-    std::unique_ptr<Function<dim>>
-    make_function(const std::string        &expression,
-                  const unsigned int        n_components,
-                  const MaterialParameters &material,
-                  const std::string        &entry,
-                  const double              length)
-    {
-      const std::map<std::string, double> constants = {
-        {"pi", numbers::PI},
-        {"E", material.youngs_modulus},
-        {"nu", material.poissons_ratio},
-        {"lambda", material.lambda()},
-        {"mu", material.mu()}};
-      const std::string variables = dim == 2 ? "x,y" : "x,y,z";
-
-      // a vector of zeros of either dimension, such as the default "0; 0",
-      // is zero in 2D and 3D alike
-      const auto n_given = Utilities::split_string_list(expression, ';').size();
-      if (n_components > 1 && n_given > 1 && n_given <= 3 &&
-          is_zero_expression(expression))
-        return std::make_unique<Functions::ZeroFunction<dim>>(n_components);
-      if (n_given != n_components)
-        throw InputError("The entry <" + entry + "> needs " +
-                           std::to_string(n_components) +
-                           " expression(s) separated by ';', not " +
-                           std::to_string(n_given) + ": '" + expression + "'.",
-                         exit_invalid_value);
-
-      // Gradients (for H1 errors) by fourth-order differences with a step
-      // relative to the body's size.
-      auto function =
-        std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-4 * length);
-      function->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
-      // deal.II prints muparser's diagnostics on std::cerr before it
-      // throws; the user gets our one-line message instead.
-      std::ostringstream    muparser_diagnostics;
-      std::streambuf *const cerr_buffer =
-        std::cerr.rdbuf(muparser_diagnostics.rdbuf());
-      const auto restore_cerr = [cerr_buffer]() {
-        std::cerr.rdbuf(cerr_buffer);
-      };
-      try
-        {
-          function->initialize(variables, expression, constants);
-          // muparser may defer some errors to the first evaluation
-          Vector<double> values(n_components);
-          function->vector_value(Point<dim>(), values);
-        }
-      catch (const std::exception &)
-        {
-          restore_cerr();
-          throw InputError("The entry <" + entry +
-                             "> is not a valid expression in " + variables +
-                             ": '" + expression + "'.",
-                           exit_invalid_value);
-        }
-      restore_cerr();
-      return function;
-    }
-
     template <int dim>
     Point<dim>
     to_point(const std::vector<double> &values)
@@ -229,10 +230,11 @@ namespace dualcontact
                                            "Exact solution/Contact pressure",
                                            length);
 
-    foundation_point  = to_point<dim>(parameters.foundation.point);
-    foundation_normal = to_point<dim>(parameters.foundation.normal);
-    if (foundation_normal.norm() > 0)
-      foundation_normal /= foundation_normal.norm();
+    // the obstacle is needed only with contact, but a plane is always
+    // there (its entries have defaults), so that gaps are defined
+    obstacle_ = std::make_unique<PlacedObstacle<dim>>(
+      create_obstacle<dim>(parameters, length),
+      to_point<dim>(parameters.obstacle.displacement));
 
     effects_.contact            = !ids_with(BoundaryCondition::contact).empty();
     effects_.friction           = create_friction_law(parameters.friction.law);
@@ -526,6 +528,11 @@ namespace dualcontact
           "conditions/Conditions>.",
         exit_inconsistent);
   }
+
+  template std::unique_ptr<Function<2>>
+  make_function(const std::string &, unsigned int, const MaterialParameters &, const std::string &, double);
+  template std::unique_ptr<Function<3>>
+  make_function(const std::string &, unsigned int, const MaterialParameters &, const std::string &, double);
 
   template class Scene<2>;
   template class Scene<3>;

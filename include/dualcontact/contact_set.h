@@ -1,6 +1,7 @@
 // The discrete contact boundary (doc/theory.md §4): the contact nodes on
-// Gamma_C with their nodal-quadrature weights m_s, the foundation normal n and
-// tangent t, the initial gaps g0, and the multipliers that live on them.
+// Gamma_C with their nodal-quadrature weights m_s, the normal n_s and tangents
+// from the obstacle at each node, the initial gaps g0, and the multipliers
+// that live on them.
 #ifndef dualcontact_contact_set_h
 #define dualcontact_contact_set_h
 
@@ -15,6 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <dualcontact/friction_law.h>
+#include <dualcontact/obstacle.h>
 #include <dualcontact/scene.h>
 
 #include <array>
@@ -33,14 +35,19 @@ namespace dualcontact
     Point<dim>                               position;
     double                                   weight = 0.; // m_s = int phi_s
     double                                   gap0   = 0.; // g0(x_s)
+    // n_s = -m(x_s), outward for the body, and an orthonormal basis of the
+    // plane orthogonal to it (tangent_basis in obstacle.h)
+    Tensor<1, dim>                      normal;
+    std::array<Tensor<1, dim>, dim - 1> tangents;
   };
 
   /**
    * The contact nodes owned by this rank, and the multipliers on them.
    *
-   * The body's normal on Gamma_C is n = -m (m: the foundation's normal into
-   * the body), so v_n = v.n > 0 moves the body toward the foundation and the
-   * non-penetration condition reads v_n(s) <= g0(s) at every node.
+   * The body's normal at node s is n_s = -m(x_s) (m: the obstacle's normal,
+   * pointing into the body), so v_n = v.n_s > 0 moves the body toward the
+   * obstacle and the non-penetration condition reads v_n(s) <= g0(s) at
+   * every node (doc/theory.md §9).
    */
   template <int dim>
   class ContactSet
@@ -68,7 +75,7 @@ namespace dualcontact
     {
       double vn = 0;
       for (unsigned int c = 0; c < dim; ++c)
-        vn += v[nodes[s].dofs[c]] * normal[c];
+        vn += v[nodes[s].dofs[c]] * nodes[s].normal[c];
       return vn;
     }
 
@@ -83,7 +90,7 @@ namespace dualcontact
       Tensor<1, dim - 1> vt;
       for (unsigned int k = 0; k < dim - 1; ++k)
         for (unsigned int c = 0; c < dim; ++c)
-          vt[k] += v[nodes[s].dofs[c]] * tangents[k][c];
+          vt[k] += v[nodes[s].dofs[c]] * nodes[s].tangents[k][c];
       return vt;
     }
 
@@ -197,11 +204,41 @@ namespace dualcontact
       return measure_;
     }
 
+    /**
+     * The contact force of node s on the obstacle as a vector,
+     * m_s (l1_s n_s + sum_k l2_s,k t_s,k); the obstacle's force on the body
+     * is its negative.
+     */
+    Tensor<1, dim>
+    nodal_force(const unsigned int s) const
+    {
+      Tensor<1, dim> force = l1[s] * nodes[s].normal;
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        force += l2[s][k] * nodes[s].tangents[k];
+      return nodes[s].weight * force;
+    }
+
+    /**
+     * n = -m and its tangent basis at a point x of Gamma_C (between nodes,
+     * e.g. at quadrature points).
+     */
+    std::pair<Tensor<1, dim>, std::array<Tensor<1, dim>, dim - 1>>
+    basis_at(const Point<dim> &x) const;
+
     std::vector<ContactNode<dim>> nodes;
-    Tensor<1, dim>                normal;  // n = -m, outward for the body
-    Tensor<1, dim>                tangent; // the first of the tangents
-    // an orthonormal basis of the tangent plane; 2D: t = (-n_2, n_1)
+
+    /**
+     * The mean direction of Gamma_C: the weighted mean of the n_s over all
+     * ranks, normalised (for a plane obstacle the plane's n = -m), and a
+     * tangent basis for it. For the equilibrium check, the totals on
+     * screen and the order of the nodes along the boundary.
+     */
+    Tensor<1, dim>                      normal;
+    Tensor<1, dim>                      tangent; // the first of the tangents
     std::array<Tensor<1, dim>, dim - 1> tangents;
+
+    /** The obstacle the normals come from (set up by setup()). */
+    const PlacedObstacle<dim> *obstacle = nullptr;
 
     /** Contact pressure multiplier l1 >= 0, one per local node. */
     std::vector<double> l1;

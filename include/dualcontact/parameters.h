@@ -129,11 +129,22 @@ namespace dualcontact
     parse_parameters(ParameterHandler &prm);
   };
 
-  /** The rigid foundation: a half-space through a point with a unit normal. */
-  struct FoundationParameters
+  /**
+   * The rigid obstacle (doc/theory.md §9): its kind (a name registered in
+   * obstacle.h; the plane takes its point and normal from
+   * FoundationParameters), the data of the curved kinds, and a prescribed
+   * rigid translation.
+   */
+  struct ObstacleParameters
   {
-    std::vector<double> point;
-    std::vector<double> normal;
+    std::string         type = "plane";
+    std::vector<double> point;  // the plane (from <Foundation/...>)
+    std::vector<double> normal; // the plane, normalised by the obstacle
+    std::vector<double> center;
+    double              radius = 1.;
+    std::vector<double> axis;
+    std::string         distance; // d(x, y[, z]) for 'distance'
+    std::vector<double> displacement;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -259,7 +270,7 @@ namespace dualcontact
     MaterialParameters      material;
     BoundaryParameters      boundary;
     LoadParameters          loads;
-    FoundationParameters    foundation;
+    ObstacleParameters      obstacle;
     FrictionParameters      friction;
     SolverParameters        solver;
     RefinementParameters    refinement;

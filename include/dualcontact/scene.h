@@ -11,6 +11,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <dualcontact/friction_law.h>
+#include <dualcontact/obstacle.h>
 #include <dualcontact/parameters.h>
 
 #include <functional>
@@ -22,6 +23,20 @@
 namespace dualcontact
 {
   using namespace dealii;
+
+  /**
+   * An expression of <entry> ("a; b" for a vector) as a function of x, y
+   * (z) with the constants pi, E, nu, lambda, mu; gradients by fourth-order
+   * differences with a step 1e-4 `length`. Throws InputError naming the
+   * entry if it does not parse or has the wrong number of components.
+   */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_function(const std::string        &expression,
+                const unsigned int        n_components,
+                const MaterialParameters &material,
+                const std::string        &entry,
+                const double              length);
 
   /** What a scene calls for; the solver composes only these. */
   struct Effects
@@ -128,16 +143,18 @@ namespace dualcontact
       return exact_.get();
     }
 
-    /** Foundation: a point on its boundary and the unit normal into the body.
-     */
-    Point<dim>     foundation_point;
-    Tensor<1, dim> foundation_normal;
+    /** The rigid obstacle, in its prescribed position. */
+    const PlacedObstacle<dim> &
+    obstacle() const
+    {
+      return *obstacle_;
+    }
 
-    /** Signed distance of x from the foundation plane: g0 = (x - p).m */
+    /** Signed distance of x from the obstacle: the initial gap g0(x). */
     double
     initial_gap(const Point<dim> &x) const
     {
-      return (x - foundation_point) * foundation_normal;
+      return obstacle_->distance(x);
     }
 
     /** A point in the middle of the body (the rectangle's centre, the
@@ -160,7 +177,8 @@ namespace dualcontact
     std::unique_ptr<Function<dim>>                               exact_;
     std::unique_ptr<Function<dim>> exact_pressure_;
     std::unique_ptr<Function<dim>> friction_;
-    Functions::ZeroFunction<dim>   zero{dim};
+    std::unique_ptr<PlacedObstacle<dim>> obstacle_;
+    Functions::ZeroFunction<dim>         zero{dim};
   };
 } // namespace dualcontact
 

@@ -1,0 +1,149 @@
+// The rigid obstacle the body meets on Gamma_C (doc/theory.md §9): a signed
+// distance d(x), positive outside the obstacle where the body is, and its
+// outward unit normal m(x) = grad d. Each kind is one file in
+// source/obstacles/, registered by name for <Obstacle/Type>, chosen once.
+#ifndef dualcontact_obstacle_h
+#define dualcontact_obstacle_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <dualcontact/parameters.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  class Obstacle
+  {
+  public:
+    virtual ~Obstacle() = default;
+
+    /** The name in <Obstacle/Type>. */
+    virtual std::string
+    name() const = 0;
+
+    /** One line for the log: what the obstacle is, with its data. */
+    virtual std::string
+    description() const = 0;
+
+    /**
+     * Signed distance of x from the obstacle's surface, in the obstacle's
+     * initial position: > 0 outside (where the body is), < 0 inside.
+     */
+    virtual double
+    distance(const Point<dim> &x) const = 0;
+
+    /** Outward unit normal m(x) = grad d(x): from the obstacle toward x. */
+    virtual Tensor<1, dim>
+    normal(const Point<dim> &x) const = 0;
+
+    /**
+     * Whether the surface is a plane: then every contact node has the same
+     * normal, and a tangential load can only be held by friction (the
+     * equilibrium check before a solve uses that).
+     */
+    virtual bool
+    is_plane() const
+    {
+      return false;
+    }
+  };
+
+  /**
+   * The obstacle of a scene, moved by the rigid translation U of
+   * <Obstacle/Displacement>: d_U(x) = d(x - U), m_U(x) = m(x - U).
+   */
+  template <int dim>
+  class PlacedObstacle
+  {
+  public:
+    PlacedObstacle(std::unique_ptr<Obstacle<dim>> shape,
+                   const Tensor<1, dim>          &translation)
+      : shape(std::move(shape))
+      , translation(translation)
+    {}
+
+    double
+    distance(const Point<dim> &x) const
+    {
+      return shape->distance(x - translation);
+    }
+
+    Tensor<1, dim>
+    normal(const Point<dim> &x) const
+    {
+      return shape->normal(x - translation);
+    }
+
+    const Obstacle<dim> &
+    operator*() const
+    {
+      return *shape;
+    }
+    const Obstacle<dim> *
+    operator->() const
+    {
+      return shape.get();
+    }
+
+    /** The prescribed rigid translation U [length]. */
+    const Tensor<1, dim> &
+    displacement() const
+    {
+      return translation;
+    }
+
+  private:
+    std::unique_ptr<Obstacle<dim>> shape;
+    Tensor<1, dim>                 translation;
+  };
+
+  template <int dim>
+  using ObstacleFactory = std::function<std::unique_ptr<Obstacle<dim>>(
+    const Parameters &parameters,
+    const double      length)>;
+
+  /**
+   * Make `name` known to <Obstacle/Type>, in 2D and 3D. Called once per
+   * kind, at load time, from the kind's own file. Returns true (for the
+   * static initialiser).
+   */
+  bool
+  register_obstacle(const std::string   &name,
+                    ObstacleFactory<2>   factory_2d,
+                    ObstacleFactory<3>   factory_3d);
+
+  /** The registered names, in alphabetical order. */
+  std::vector<std::string>
+  obstacle_names();
+
+  /**
+   * The obstacle <Obstacle/Type> names, built from the parameters; `length`
+   * is the body's size (the step of numerical gradients). Throws InputError
+   * naming the entry when the data is unusable.
+   */
+  template <int dim>
+  std::unique_ptr<Obstacle<dim>>
+  create_obstacle(const Parameters &parameters, const double length);
+
+  /**
+   * An orthonormal basis of the plane orthogonal to the unit vector n: 2D
+   * t = (-n_2, n_1); 3D t_1 = e_x (or e_y where |n_x| >= 0.9) made
+   * orthogonal to n, and t_2 = n x t_1. A function of n alone, so that the
+   * tangential multiplier's components mean the same at nearby nodes and
+   * can be carried to the next mesh.
+   */
+  template <int dim>
+  std::array<Tensor<1, dim>, dim - 1>
+  tangent_basis(const Tensor<1, dim> &n);
+} // namespace dualcontact
+
+#endif
