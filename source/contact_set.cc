@@ -7,6 +7,7 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/input_error.h>
 
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -114,10 +115,17 @@ namespace dualcontact
           ">).",
         exit_invalid_value);
 
-    // the mean direction of Gamma_C
+    // the direction of first contact: the mean normal of the nodes closest
+    // to the obstacle (all nodes on a plane parallel to a plane obstacle)
+    double closest = std::numeric_limits<double>::max();
+    for (const auto &node : nodes)
+      closest = std::min(closest, node.gap0);
+    closest                = Utilities::MPI::min(closest, comm);
+    const double tolerance = 1e-8 * scene.characteristic_length();
     Tensor<1, dim> mean;
     for (const auto &node : nodes)
-      mean += node.weight * node.normal;
+      if (node.gap0 <= closest + tolerance)
+        mean += node.weight * node.normal;
     for (unsigned int d = 0; d < dim; ++d)
       mean[d] = Utilities::MPI::sum(mean[d], comm);
     if (mean.norm() > 0)

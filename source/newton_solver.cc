@@ -290,9 +290,21 @@ namespace dualcontact
                (contact.l1[s] * contact.l1[s] +
                 (contact.friction ? contact.l2[s].norm_square() : 0.));
     const double contact_forces = std::sqrt(Utilities::MPI::sum(local, comm));
-    const double reference      = contact_forces > 0. ?
-                                    std::min(load, contact_forces) :
-                                    (load > 0. ? load : 1.);
+    // Without loads (an obstacle pressed in by a prescribed displacement)
+    // and before the first pressure, the force the augmented term exerts on
+    // the initial overlap, m_s r (g0_s)^-, sets the scale.
+    double overlap = 0.;
+    for (unsigned int s = 0; s < n_nodes; ++s)
+      overlap += std::pow(contact.nodes[s].weight * system->r *
+                            std::max(-contact.nodes[s].gap0, 0.),
+                          2);
+    overlap = std::sqrt(Utilities::MPI::sum(overlap, comm));
+    double reference = load > 0. ? load : overlap;
+    if (contact_forces > 0.)
+      reference = reference > 0. ? std::min(reference, contact_forces) :
+                                   contact_forces;
+    if (!(reference > 0.))
+      reference = 1.; // nothing loads the body: v = 0 at once
 
     // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k
     // (chi the step's proximal weight).

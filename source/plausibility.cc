@@ -30,9 +30,20 @@ namespace dualcontact
       return out.str();
     }
 
-    // The entries that place the foundation, for messages.
-    const std::string foundation_entries =
-      "<Foundation/Point> and <Foundation/Normal>";
+    // The entries that place the obstacle, for messages.
+    template <int dim>
+    std::string
+    obstacle_entries(const Scene<dim> &scene)
+    {
+      const std::string kind = scene.obstacle()->name();
+      std::string       entries =
+        kind == "plane"    ? "<Foundation/Point> and <Foundation/Normal>" :
+        kind == "distance" ? "<Obstacle/Distance>" :
+                             "<Obstacle/Center> and <Obstacle/Radius>";
+      if (scene.obstacle().displacement().norm() > 0)
+        entries += ", <Obstacle/Displacement>";
+      return entries;
+    }
   } // namespace
 
   template <int dim>
@@ -44,42 +55,52 @@ namespace dualcontact
       return;
     const double tolerance = 1e-8 * scene.characteristic_length();
     // the extreme signed distances of all vertices and of the contact
-    // boundary's vertices from the plane (> 0 on the body's side)
+    // boundary's vertices from the obstacle where it starts, before a
+    // prescribed displacement moves it into the body (> 0 on the body's
+    // side)
+    const Obstacle<dim> &obstacle = *scene.obstacle();
     double highest        = -std::numeric_limits<double>::max();
     double lowest_contact = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           for (const unsigned int v : cell->vertex_indices())
-            highest = std::max(highest, scene.initial_gap(cell->vertex(v)));
+            highest = std::max(highest, obstacle.distance(cell->vertex(v)));
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary() &&
                 scene.parameters.boundary.condition(face->boundary_id()) ==
                   BoundaryCondition::contact)
               for (const unsigned int v : face->vertex_indices())
                 lowest_contact =
-                  std::min(lowest_contact, scene.initial_gap(face->vertex(v)));
+                  std::min(lowest_contact, obstacle.distance(face->vertex(v)));
         }
     const MPI_Comm comm = triangulation.get_communicator();
     highest             = Utilities::MPI::max(highest, comm);
     lowest_contact      = Utilities::MPI::min(lowest_contact, comm);
 
-    if (highest < tolerance)
+    const std::string entries = obstacle_entries(scene);
+    if (highest < tolerance && obstacle.is_plane())
       throw InputError(
         "The whole body lies behind the foundation plane: the foundation "
         "normal points away from the body (" +
-          foundation_entries +
+          entries +
           "). It must point from the foundation into the body; reverse "
           "<Foundation/Normal>.",
         exit_inconsistent);
-    if (lowest_contact < -tolerance)
-      throw InputError("The body starts inside the foundation: part of its "
-                       "contact boundary lies " +
-                         format_number(-lowest_contact) +
-                         " behind the foundation plane (" + foundation_entries +
-                         "). Move the plane to the body's surface or beyond "
-                         "it.",
+    if (highest < tolerance)
+      throw InputError("The whole body lies inside the obstacle (" + entries +
+                         "): it must start outside it, where the distance "
+                         "is positive.",
                        exit_inconsistent);
+    if (lowest_contact < -tolerance)
+      throw InputError(
+        "The body starts inside the " +
+          std::string(obstacle.is_plane() ? "foundation" : "obstacle") +
+          ": part of its contact boundary lies " +
+          format_number(-lowest_contact) + " inside it (" + entries +
+          "). Place the obstacle at the body's surface or beyond it; to "
+          "press it in, prescribe <Obstacle/Displacement>.",
+        exit_inconsistent);
   }
 
   template <int dim>
@@ -165,7 +186,7 @@ namespace dualcontact
           describe(figures.penetrating_id,
                    scene.parameters.boundary.condition(
                      figures.penetrating_id)) +
-          " passes through the foundation by " +
+          " passes through the obstacle by " +
           format_number(figures.penetration) + " (" +
           plain(100. * figures.penetration / length) +
           " % of the body's size): only boundaries with the condition "
@@ -174,8 +195,8 @@ namespace dualcontact
           throw InputError("The solution is not physical: " + text +
                              ". Give that boundary the condition 'contact' "
                              "(<Boundary conditions/Conditions>), or check "
-                             "which face touches the foundation (" +
-                             foundation_entries + ").",
+                             "which face touches the obstacle (" +
+                             obstacle_entries(scene) + ").",
                            exit_inconsistent);
         figures.warnings.push_back(text + " (less than 0.1 % of its size).");
       }
@@ -191,12 +212,23 @@ namespace dualcontact
         if (contact && figures.min_initial_gap > 0.05 * length)
           text << "; the contact boundary starts "
                << plain(figures.min_initial_gap)
-               << " from the foundation, and the body moves that far to "
+               << " from the obstacle, and the body moves that far to "
                   "reach it ("
-               << foundation_entries << ")";
+               << obstacle_entries(scene) << ")";
         text << ".";
         figures.warnings.push_back(text.str());
       }
+    // gap and normal are taken before deformation: the obstacle's surface
+    // must look flat over the distances the body moves
+    const double curvature_radius = scene.obstacle()->radius_of_curvature();
+    if (contact && figures.max_displacement > 0.05 * curvature_radius)
+      figures.warnings.push_back(
+        "the displacements reach " + format_number(figures.max_displacement) +
+        ", " + plain(100. * figures.max_displacement / curvature_radius) +
+        " % of the obstacle's radius of curvature " +
+        plain(curvature_radius) +
+        ": gaps and normals are taken in the initial configuration, which "
+        "is accurate only for displacements small against that radius.");
     return figures;
   }
 

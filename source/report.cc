@@ -703,7 +703,7 @@ namespace dualcontact
             << " CG iterations" << seconds(r.time.solve) << '\n';
     else
       print_contact_results(r);
-    print_reactions(r.reactions);
+    print_reactions(r.reactions, r.zone);
     std::vector<std::string> norms = {"||u||_L2 = " +
                                       scientific(r.errors.u_l2, 6)};
     if (scene.exact_displacement() != nullptr)
@@ -733,7 +733,7 @@ namespace dualcontact
                   indent);
     std::vector<std::string> zone_items = {
       "total contact force " + significant(zone.contact_force) +
-        " (applied load toward the foundation " +
+        " (applied load toward the obstacle " +
         significant(solve.normal_load) + ")",
       "peak pressure " + significant(zone.max_pressure)};
     pcout << wrap("   ", zone_items, ", ", indent);
@@ -800,7 +800,8 @@ namespace dualcontact
 
   template <int dim>
   void
-  Report<dim>::print_reactions(const ReactionFigures &reactions) const
+  Report<dim>::print_reactions(const ReactionFigures    &reactions,
+                               const ContactZoneFigures &zone) const
   {
     // with the contact force they balance
     if (reactions.on_id.empty())
@@ -815,6 +816,13 @@ namespace dualcontact
     for (const auto &[id, f] : reactions.on_id)
       items.push_back("id " + std::to_string(id) + " " + vector(f));
     items.push_back("applied loads " + vector(reactions.applied_load));
+    if (scene.effects().contact)
+      {
+        std::array<double, 3> on_obstacle{};
+        for (unsigned int c = 0; c < dim; ++c)
+          on_obstacle[c] = -zone.resultant[c];
+        items.push_back("force on the obstacle " + vector(on_obstacle));
+      }
     items.push_back("imbalance " + scientific(reactions.imbalance, 1) +
                     " (relative)");
     pcout << wrap("   reactions on the body: ", items, "; ", "     ");
@@ -879,6 +887,10 @@ namespace dualcontact
     for (const auto &[id, f] : r.reactions.on_id)
       for (unsigned int c = 0; c < dim; ++c)
         t.add_value("reaction_" + std::to_string(id) + "_" + axes[c], f[c]);
+    // the force of the body on the obstacle (an indenter's reaction)
+    for (unsigned int c = 0; c < dim; ++c)
+      t.add_value(std::string("obstacle_force_") + axes[c],
+                  -r.zone.resultant[c]);
     t.add_value("time_refine", r.time.refine);
     t.add_value("time_setup", r.time.setup);
     t.add_value("time_assembly", r.time.assembly);

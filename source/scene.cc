@@ -160,11 +160,13 @@ namespace dualcontact
   Effects::describe() const
   {
     std::ostringstream out;
-    out << "  contact with the foundation : "
+    out << "  contact with the obstacle   : "
         << (contact ? "yes: Uzawa on the modified Lagrangian" :
                       "no: one linear elasticity solve per mesh")
-        << '\n'
-        << "  friction                    : "
+        << '\n';
+    if (contact)
+      out << "  obstacle                    : " << obstacle << '\n';
+    out << "  friction                    : "
         << (!contact      ? "no (no contact)" :
             zero_friction ? "no: the coefficient/threshold is zero, the "
                             "frictionless path runs" :
@@ -237,6 +239,13 @@ namespace dualcontact
       to_point<dim>(parameters.obstacle.displacement));
 
     effects_.contact            = !ids_with(BoundaryCondition::contact).empty();
+    effects_.obstacle           = (*obstacle_)->description();
+    if (obstacle_->displacement().norm() > 0)
+      {
+        std::ostringstream moved;
+        moved << ", moved by (" << obstacle_->displacement() << ")";
+        effects_.obstacle += moved.str();
+      }
     effects_.friction           = create_friction_law(parameters.friction.law);
     const std::string parameter = effects_.friction->parameter_entry();
     if (effects_.contact && !parameter.empty())

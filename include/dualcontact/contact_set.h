@@ -228,10 +228,11 @@ namespace dualcontact
     std::vector<ContactNode<dim>> nodes;
 
     /**
-     * The mean direction of Gamma_C: the weighted mean of the n_s over all
-     * ranks, normalised (for a plane obstacle the plane's n = -m), and a
-     * tangent basis for it. For the equilibrium check, the totals on
-     * screen and the order of the nodes along the boundary.
+     * The direction of first contact: the mean of the n_s of the nodes
+     * closest to the obstacle (smallest g0), over all ranks, normalised (for
+     * a plane obstacle the plane's n = -m), and a tangent basis for it. For
+     * the equilibrium check, the totals on screen and the order of the
+     * nodes along the boundary.
      */
     Tensor<1, dim>                      normal;
     Tensor<1, dim>                      tangent; // the first of the tangents

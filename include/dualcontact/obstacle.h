@@ -12,6 +12,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,6 +55,17 @@ namespace dualcontact
     is_plane() const
     {
       return false;
+    }
+
+    /**
+     * The smallest radius of curvature of the surface (infinite for a
+     * plane, unknown ones too): gaps and normals are taken before
+     * deformation, which needs displacements small against it.
+     */
+    virtual double
+    radius_of_curvature() const
+    {
+      return std::numeric_limits<double>::infinity();
     }
   };
 

@@ -144,7 +144,8 @@ namespace dualcontact
     print_contact_results(const CycleResult &result) const;
 
     void
-    print_reactions(const ReactionFigures &reactions) const;
+    print_reactions(const ReactionFigures    &reactions,
+                    const ContactZoneFigures &zone) const;
 
     void
     add_table_rows(const CycleResult &result);

@@ -49,6 +49,7 @@ namespace dualcontact
     bool                               zero_friction = false;
     bool                               body_force    = false;
     bool                               tractions     = false;
+    std::string                        obstacle; // its description
 
     const FrictionLaw &
     friction_law() const

@@ -63,6 +63,12 @@ namespace dualcontact
         return r.norm() > 0 ? r / r.norm() : Tensor<1, dim>();
       }
 
+      double
+      radius_of_curvature() const override
+      {
+        return radius;
+      }
+
     private:
       // x - c without its component along the axis (cylinder in 3D)
       Tensor<1, dim>
