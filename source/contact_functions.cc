@@ -82,10 +82,10 @@ namespace dualcontact
     const double scale = 1e-10 * balance.resultant;
     if (balance.normal_free && balance.load_away > scale)
       throw InputError(
-        "No equilibrium: the net load pulls the body away from the foundation "
+        "No equilibrium: the net load pulls the body away from the obstacle "
         "(" +
           std::to_string(balance.load_away) +
-          " along the foundation normal) and only the contact could hold it "
+          " along the obstacle's normal) and only the contact could hold it "
           "in that direction.",
         exit_no_equilibrium);
     if (capacity < 0.)
@@ -97,7 +97,7 @@ namespace dualcontact
                            " exceeds what friction can resist, " +
                            std::to_string(capacity) + " (" + capacity_text +
                            "), and only friction holds the body along the "
-                           "foundation.",
+                           "obstacle.",
                          exit_no_equilibrium);
   }
 } // namespace dualcontact
