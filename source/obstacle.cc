@@ -1,23 +1,14 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
+#include <dualcontact/registry.h>
 
-#include <map>
 #include <utility>
 
 namespace dualcontact
 {
   namespace
   {
-    // A function-local static, so that it exists before the first kind
-    // registers itself, whatever the order of static initialisation.
-    std::map<std::string, std::pair<ObstacleFactory<2>, ObstacleFactory<3>>> &
-    registry()
-    {
-      static std::map<std::string,
-                      std::pair<ObstacleFactory<2>, ObstacleFactory<3>>>
-        kinds;
-      return kinds;
-    }
+    using Factories = std::pair<ObstacleFactory<2>, ObstacleFactory<3>>;
   } // namespace
 
   bool
@@ -25,33 +16,33 @@ namespace dualcontact
                     ObstacleFactory<2> factory_2d,
                     ObstacleFactory<3> factory_3d)
   {
-    registry()[name] = {std::move(factory_2d), std::move(factory_3d)};
+    Registry<Factories>::instance().add(name,
+                                        {std::move(factory_2d),
+                                         std::move(factory_3d)});
     return true;
   }
 
   std::vector<std::string>
   obstacle_names()
   {
-    std::vector<std::string> names;
-    for (const auto &[name, factories] : registry())
-      names.push_back(name);
-    return names;
+    return Registry<Factories>::instance().names();
   }
 
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
   create_obstacle(const Parameters &parameters, const double length)
   {
-    const auto it = registry().find(parameters.obstacle.type);
-    if (it == registry().end())
+    const Factories *factories =
+      Registry<Factories>::instance().find(parameters.obstacle.type);
+    if (factories == nullptr)
       throw InputError("There is no obstacle called '" +
                          parameters.obstacle.type +
                          "' (<Obstacle/Type>).",
                        exit_invalid_value);
     if constexpr (dim == 2)
-      return it->second.first(parameters, length);
+      return factories->first(parameters, length);
     else
-      return it->second.second(parameters, length);
+      return factories->second(parameters, length);
   }
 
   template <int dim>
