@@ -47,7 +47,7 @@ namespace dualcontact
    * The body's normal at node s is n_s = -m(x_s) (m: the obstacle's normal,
    * pointing into the body), so v_n = v.n_s > 0 moves the body toward the
    * obstacle and the non-penetration condition reads v_n(s) <= g0(s) at
-   * every node (doc/theory.md §9).
+   * every node (doc/theory.md §10).
    */
   template <int dim>
   class ContactSet

@@ -1,4 +1,4 @@
-// The rigid obstacle the body meets on Gamma_C (doc/theory.md §9): a signed
+// The rigid obstacle the body meets on Gamma_C (doc/theory.md §10): a signed
 // distance d(x), positive outside the obstacle where the body is, and its
 // outward unit normal m(x) = grad d. Each kind is one file in
 // source/obstacles/, registered by name for <Obstacle/Type>, chosen once.

@@ -130,7 +130,7 @@ namespace dualcontact
   };
 
   /**
-   * The rigid obstacle (doc/theory.md §9): its kind (a name registered in
+   * The rigid obstacle (doc/theory.md §10): its kind (a name registered in
    * obstacle.h; the plane takes its point and normal from
    * FoundationParameters), the data of the curved kinds, and a prescribed
    * rigid translation.
