@@ -470,8 +470,8 @@ namespace dualcontact
   {
     TimerOutput::Scope t(computing_timer, "measure contact zone");
     ContactZoneFigures figures;
-    double                                 force = 0, peak = 0;
-    Tensor<1, dim>                         on_obstacle;
+    double             force = 0, peak = 0;
+    Tensor<1, dim>     on_obstacle;
     std::vector<std::pair<double, double>> local; // (t, l1)
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {

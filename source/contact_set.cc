@@ -97,8 +97,8 @@ namespace dualcontact
           any_free |= !all_constraints.is_constrained(node.dofs[c]);
         if (!any_free || !(weights[key] > 0.))
           continue;
-        node.weight = weights[key];
-        node.gap0   = scene.initial_gap(node.position);
+        node.weight                          = weights[key];
+        node.gap0                            = scene.initial_gap(node.position);
         std::tie(node.normal, node.tangents) = basis_at(node.position);
         if (!(node.normal.norm() > 0.5))
           ++no_normal;
@@ -120,8 +120,8 @@ namespace dualcontact
     double closest = std::numeric_limits<double>::max();
     for (const auto &node : nodes)
       closest = std::min(closest, node.gap0);
-    closest                = Utilities::MPI::min(closest, comm);
-    const double tolerance = 1e-8 * scene.characteristic_length();
+    closest                  = Utilities::MPI::min(closest, comm);
+    const double   tolerance = 1e-8 * scene.characteristic_length();
     Tensor<1, dim> mean;
     for (const auto &node : nodes)
       if (node.gap0 <= closest + tolerance)

@@ -71,7 +71,7 @@ namespace dualcontact
     std::vector<types::global_dof_index> local_dofs(dim);
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
-        const double   m     = contact.nodes[s].weight;
+        const double   m = contact.nodes[s].weight;
         Tensor<1, dim> force =
           (m * positive_part(z[s])) * contact.nodes[s].normal;
         if (contact.friction)
@@ -106,10 +106,11 @@ namespace dualcontact
       newton_matrix.add(system->proximal_correction(), system->mass);
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
-        const double                               m_r = contact.nodes[s].weight * system->r;
-        const Tensor<1, dim>                      &n   = contact.nodes[s].normal;
-        const std::array<Tensor<1, dim>, dim - 1> &t   = contact.nodes[s].tangents;
-        local_matrix                                   = 0;
+        const double          m_r = contact.nodes[s].weight * system->r;
+        const Tensor<1, dim> &n   = contact.nodes[s].normal;
+        const std::array<Tensor<1, dim>, dim - 1> &t =
+          contact.nodes[s].tangents;
+        local_matrix = 0;
         // normal part, where z >= 0 (at z = 0 the generalised derivative may
         // take either branch; the active one spares a free fall)
         if (z[s] >= 0.)
@@ -298,11 +299,11 @@ namespace dualcontact
       overlap += std::pow(contact.nodes[s].weight * system->r *
                             std::max(-contact.nodes[s].gap0, 0.),
                           2);
-    overlap = std::sqrt(Utilities::MPI::sum(overlap, comm));
+    overlap          = std::sqrt(Utilities::MPI::sum(overlap, comm));
     double reference = load > 0. ? load : overlap;
     if (contact_forces > 0.)
-      reference = reference > 0. ? std::min(reference, contact_forces) :
-                                   contact_forces;
+      reference =
+        reference > 0. ? std::min(reference, contact_forces) : contact_forces;
     if (!(reference > 0.))
       reference = 1.; // nothing loads the body: v = 0 at once
 

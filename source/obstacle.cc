@@ -36,8 +36,7 @@ namespace dualcontact
       Registry<Factories>::instance().find(parameters.obstacle.type);
     if (factories == nullptr)
       throw InputError("There is no obstacle called '" +
-                         parameters.obstacle.type +
-                         "' (<Obstacle/Type>).",
+                         parameters.obstacle.type + "' (<Obstacle/Type>).",
                        exit_invalid_value);
     if constexpr (dim == 2)
       return factories->first(parameters, length);

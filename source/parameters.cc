@@ -1131,8 +1131,7 @@ namespace dualcontact
           }
         else if (obstacle.type == "distance")
           {
-            if (obstacle.distance.find_first_not_of(" \t") ==
-                std::string::npos)
+            if (obstacle.distance.find_first_not_of(" \t") == std::string::npos)
               throw InputError("The entry <Obstacle/Type> is 'distance' but "
                                "<Obstacle/Distance> gives no expression.",
                                exit_inconsistent);

@@ -37,9 +37,9 @@ namespace dualcontact
     {
       const std::string kind = scene.obstacle()->name();
       std::string       entries =
-        kind == "plane"    ? "<Foundation/Point> and <Foundation/Normal>" :
-        kind == "distance" ? "<Obstacle/Distance>" :
-                             "<Obstacle/Center> and <Obstacle/Radius>";
+        kind == "plane" ? "<Foundation/Point> and <Foundation/Normal>" :
+              kind == "distance" ? "<Obstacle/Distance>" :
+                                   "<Obstacle/Center> and <Obstacle/Radius>";
       if (scene.obstacle().displacement().norm() > 0)
         entries += ", <Obstacle/Displacement>";
       return entries;
@@ -58,9 +58,9 @@ namespace dualcontact
     // boundary's vertices from the obstacle where it starts, before a
     // prescribed displacement moves it into the body (> 0 on the body's
     // side)
-    const Obstacle<dim> &obstacle = *scene.obstacle();
-    double highest        = -std::numeric_limits<double>::max();
-    double lowest_contact = std::numeric_limits<double>::max();
+    const Obstacle<dim> &obstacle       = *scene.obstacle();
+    double               highest        = -std::numeric_limits<double>::max();
+    double               lowest_contact = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -225,8 +225,7 @@ namespace dualcontact
       figures.warnings.push_back(
         "the displacements reach " + format_number(figures.max_displacement) +
         ", " + plain(100. * figures.max_displacement / curvature_radius) +
-        " % of the obstacle's radius of curvature " +
-        plain(curvature_radius) +
+        " % of the obstacle's radius of curvature " + plain(curvature_radius) +
         ": gaps and normals are taken in the initial configuration, which "
         "is accurate only for displacements small against that radius.");
     return figures;

@@ -733,8 +733,8 @@ namespace dualcontact
                   indent);
     std::vector<std::string> zone_items = {
       "total contact force " + significant(zone.contact_force) +
-        " (applied load toward the obstacle " +
-        significant(solve.normal_load) + ")",
+        " (applied load toward the obstacle " + significant(solve.normal_load) +
+        ")",
       "peak pressure " + significant(zone.max_pressure)};
     pcout << wrap("   ", zone_items, ", ", indent);
     if (dim == 2)

@@ -65,9 +65,7 @@ namespace dualcontact
     std::ostringstream    muparser_diagnostics;
     std::streambuf *const cerr_buffer =
       std::cerr.rdbuf(muparser_diagnostics.rdbuf());
-    const auto restore_cerr = [cerr_buffer]() {
-      std::cerr.rdbuf(cerr_buffer);
-    };
+    const auto restore_cerr = [cerr_buffer]() { std::cerr.rdbuf(cerr_buffer); };
     try
       {
         function->initialize(variables, expression, constants);
@@ -238,8 +236,8 @@ namespace dualcontact
       create_obstacle<dim>(parameters, length),
       to_point<dim>(parameters.obstacle.displacement));
 
-    effects_.contact            = !ids_with(BoundaryCondition::contact).empty();
-    effects_.obstacle           = (*obstacle_)->description();
+    effects_.contact  = !ids_with(BoundaryCondition::contact).empty();
+    effects_.obstacle = (*obstacle_)->description();
     if (obstacle_->displacement().norm() > 0)
       {
         std::ostringstream moved;
@@ -539,9 +537,17 @@ namespace dualcontact
   }
 
   template std::unique_ptr<Function<2>>
-  make_function(const std::string &, unsigned int, const MaterialParameters &, const std::string &, double);
+  make_function(const std::string &,
+                unsigned int,
+                const MaterialParameters &,
+                const std::string &,
+                double);
   template std::unique_ptr<Function<3>>
-  make_function(const std::string &, unsigned int, const MaterialParameters &, const std::string &, double);
+  make_function(const std::string &,
+                unsigned int,
+                const MaterialParameters &,
+                const std::string &,
+                double);
 
   template class Scene<2>;
   template class Scene<3>;

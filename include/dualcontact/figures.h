@@ -61,8 +61,9 @@ namespace dualcontact
     double contact_force = 0.; // sum_s m_s l1_s
     // the force of the foundation on the body, a vector
     std::array<double, 3> resultant{};
-    double tangential_force = 0.; // |sum_s m_s T_s l2_s| in the mean tangent plane
-    double                max_pressure     = 0.; // max_s l1_s
+    double                tangential_force =
+      0.; // |sum_s m_s T_s l2_s| in the mean tangent plane
+    double max_pressure    = 0.; // max_s l1_s
     double half_width      = 0.; // 2D: half the extent of the active nodes
     double edge_half_width = 0.; // 2D: the same, edges extrapolated
     double pressure_error  = 0.; // relative L2 on Gamma_C (exact known)

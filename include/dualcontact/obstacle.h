@@ -79,8 +79,8 @@ namespace dualcontact
   public:
     PlacedObstacle(std::unique_ptr<Obstacle<dim>> shape,
                    const Tensor<1, dim>          &translation)
-      : shape(std::move(shape))
-      , translation(translation)
+        : shape(std::move(shape))
+        , translation(translation)
     {}
 
     double
@@ -119,9 +119,9 @@ namespace dualcontact
   };
 
   template <int dim>
-  using ObstacleFactory = std::function<std::unique_ptr<Obstacle<dim>>(
-    const Parameters &parameters,
-    const double      length)>;
+  using ObstacleFactory =
+    std::function<std::unique_ptr<Obstacle<dim>>(const Parameters &parameters,
+                                                 const double      length)>;
 
   /**
    * Make `name` known to <Obstacle/Type>, in 2D and 3D. Called once per
@@ -129,9 +129,9 @@ namespace dualcontact
    * static initialiser).
    */
   bool
-  register_obstacle(const std::string   &name,
-                    ObstacleFactory<2>   factory_2d,
-                    ObstacleFactory<3>   factory_3d);
+  register_obstacle(const std::string &name,
+                    ObstacleFactory<2> factory_2d,
+                    ObstacleFactory<3> factory_3d);
 
   /** The registered names, in alphabetical order. */
   std::vector<std::string>

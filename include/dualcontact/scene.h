@@ -176,8 +176,8 @@ namespace dualcontact
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> tractions;
     std::unique_ptr<Function<dim>>                               body_force_;
     std::unique_ptr<Function<dim>>                               exact_;
-    std::unique_ptr<Function<dim>> exact_pressure_;
-    std::unique_ptr<Function<dim>> friction_;
+    std::unique_ptr<Function<dim>>       exact_pressure_;
+    std::unique_ptr<Function<dim>>       friction_;
     std::unique_ptr<PlacedObstacle<dim>> obstacle_;
     Functions::ZeroFunction<dim>         zero{dim};
   };

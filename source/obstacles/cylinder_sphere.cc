@@ -16,15 +16,14 @@ namespace dualcontact
     {
     public:
       Round(const ObstacleParameters &parameters, const bool cylinder)
-        : kind(parameters.type)
-        , radius(parameters.radius)
+          : kind(parameters.type)
+          , radius(parameters.radius)
       {
         for (unsigned int d = 0; d < dim && d < parameters.center.size(); ++d)
           center[d] = parameters.center[d];
         if (cylinder && dim == 3)
           {
-            for (unsigned int d = 0; d < dim && d < parameters.axis.size();
-                 ++d)
+            for (unsigned int d = 0; d < dim && d < parameters.axis.size(); ++d)
               axis[d] = parameters.axis[d];
             if (axis.norm() > 0)
               axis /= axis.norm();
@@ -41,8 +40,7 @@ namespace dualcontact
       description() const override
       {
         std::ostringstream out;
-        out << kind << " of radius " << radius << " about ("
-            << center << ")";
+        out << kind << " of radius " << radius << " about (" << center << ")";
         if (axis.norm() > 0)
           out << ", axis (" << axis << ")";
         out << ", the body outside it";

@@ -17,13 +17,13 @@ namespace dualcontact
     {
     public:
       SignedDistance(const Parameters &parameters, const double length)
-        : expression(parameters.obstacle.distance)
-        , function(make_function<dim>(expression,
-                                      1,
-                                      parameters.material,
-                                      "Obstacle/Distance",
-                                      length))
-        , step(1e-6 * length)
+          : expression(parameters.obstacle.distance)
+          , function(make_function<dim>(expression,
+                                        1,
+                                        parameters.material,
+                                        "Obstacle/Distance",
+                                        length))
+          , step(1e-6 * length)
       {}
 
       std::string

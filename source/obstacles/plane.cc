@@ -68,7 +68,6 @@ namespace dualcontact
       return std::make_unique<Plane<dim>>(parameters.obstacle);
     }
 
-    const bool registered =
-      register_obstacle("plane", make<2>, make<3>);
+    const bool registered = register_obstacle("plane", make<2>, make<3>);
   } // namespace
 } // namespace dualcontact

@@ -52,7 +52,7 @@ TEST_CASE("A rigid cylinder pressed into a block by force: Hertz's a and p0 "
   const auto  &zone = run.last().zone;
   const double P    = 8. * 0.5394218155202255; // the half model's load
   // the half model reports the half-width of [0, a]: a/2
-  const double a = 2. * zone.edge_half_width;
+  const double a                 = 2. * zone.edge_half_width;
   const auto [a_exact, p0_exact] = hertz_2d(2. * P, 1.);
   INFO("a " << a << " (Hertz " << a_exact << "), p0 " << zone.max_pressure
             << " (Hertz " << p0_exact << ")");
@@ -99,12 +99,12 @@ TEST_CASE("A rigid cylinder with Coulomb friction: the friction law at every "
           "the zone as the coupling at nu = 0.3 makes it",
           "[obstacle][friction]")
 {
-  Run run("indenter_cylinder.prm",
+  Run                  run("indenter_cylinder.prm",
           "subsection Friction\n  set Law = coulomb\n  set Coefficient = "
-          "0.3\nend\n");
+                           "0.3\nend\n");
   const ContactSet<2> &c      = run.problem->contact();
   double               excess = 0., g_max = 0.;
-  unsigned int         slip   = 0;
+  unsigned int         slip = 0;
   for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
     {
       excess = std::max(excess, c.l2[s].norm() - 0.3 * c.l1[s]);

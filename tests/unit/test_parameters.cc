@@ -105,7 +105,8 @@ TEST_CASE("A misspelt entry or subsection is named with the closest "
 
   // the right name in the wrong subsection
   error = error_reading("subsection Material\n  set Radius = 2\nend\n");
-  CHECK(contains(error.message, "did you mean <Geometry/Radius> or <Obstacle/Radius>?"));
+  CHECK(contains(error.message,
+                 "did you mean <Geometry/Radius> or <Obstacle/Radius>?"));
 
   error = error_reading("subsection Frictoin\nend\n");
   CHECK(error.code == exit_unknown_entry);

@@ -98,8 +98,7 @@ TEST_CASE("A foundation far from the body gives a rigid shift, warned about",
   CHECK(p.min_initial_gap == Approx(10.));
   REQUIRE(p.warnings.size() == 1);
   CHECK(p.warnings[0].find("500 % of the body's size 2") != std::string::npos);
-  CHECK(p.warnings[0].find("starts 10 from the obstacle") !=
-        std::string::npos);
+  CHECK(p.warnings[0].find("starts 10 from the obstacle") != std::string::npos);
 }
 
 TEST_CASE("The shipped scenes pass the plausibility checks", "[plausibility]")
