@@ -14,6 +14,13 @@ namespace dualcontact
 {
   namespace
   {
+    // -0 (a stress component that vanishes) as 0
+    inline double
+    tidy(const double x)
+    {
+      return x + 0.;
+    }
+
     template <int dim>
     std::string
     point_text(const Point<dim> &p)
@@ -125,17 +132,17 @@ namespace dualcontact
       {
         csv << v.cycle << ',' << v.probe + 1;
         for (unsigned int d = 0; d < dim; ++d)
-          csv << ',' << v.point[d];
+          csv << ',' << tidy(v.point[d]);
         for (unsigned int d = 0; d < dim; ++d)
-          csv << ',' << v.displacement[d];
+          csv << ',' << tidy(v.displacement[d]);
         for (unsigned int d = 0; d < dim; ++d)
-          csv << ',' << v.stress[d][d];
+          csv << ',' << tidy(v.stress[d][d]);
         if (dim == 2)
-          csv << ',' << v.stress_zz;
+          csv << ',' << tidy(v.stress_zz);
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = i + 1; j < dim; ++j)
-            csv << ',' << v.stress[i][j];
-        csv << ',' << v.von_mises << '\n';
+            csv << ',' << tidy(v.stress[i][j]);
+        csv << ',' << tidy(v.von_mises) << '\n';
       }
   }
 
