@@ -50,7 +50,7 @@ namespace dualcontact
         local.push_back(contact_set.status(s));
       }
 
-    std::vector<ContactNodeRow<dim>> rows;
+    std::vector<ContactNodeRow<dim>>       rows;
     const std::vector<std::vector<double>> all =
       Utilities::MPI::gather(comm, local, 0);
     if (Utilities::MPI::this_mpi_process(comm) != 0)
@@ -149,8 +149,8 @@ namespace dualcontact
     const AffineConstraints<double>     &hanging_node_constraints,
     const IndexSet                      &locally_relevant_dofs)
   {
-    const bool friction = contact_set.law != nullptr &&
-                          contact_set.law->has_friction();
+    const bool friction =
+      contact_set.law != nullptr && contact_set.law->has_friction();
     // The nodal values, packed dim to a vector of the displacement element
     // at the node's DoFs: the scalars, then the vectors. The status is
     // stored plus one, so that a node that is no contact node reads -1.
@@ -223,7 +223,8 @@ namespace dualcontact
 
     // one patch per contact face of a locally owned cell
     patches.clear();
-    constexpr unsigned int n_vertices = GeometryInfo<dim - 1>::vertices_per_cell;
+    constexpr unsigned int n_vertices =
+      GeometryInfo<dim - 1>::vertices_per_cell;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())

@@ -724,13 +724,10 @@ namespace dualcontact
 
     // a .pvd record over all cycles so that ParaView shows them as a
     // sequence
-    pvtu_records.emplace_back(cycle,
-                              data_out.write_vtu_with_pvtu_record(
-                                directory + "/",
-                                "solution",
-                                cycle,
-                                mpi_communicator,
-                                2));
+    pvtu_records.emplace_back(
+      cycle,
+      data_out.write_vtu_with_pvtu_record(
+        directory + "/", "solution", cycle, mpi_communicator, 2));
     if (root)
       {
         std::ofstream pvd(directory + "/solution.pvd");

@@ -59,8 +59,8 @@ namespace dualcontact
     cache.reinit(points, triangulation, mapping);
     for (unsigned int i = 0; i < points.size(); ++i)
       if (!cache.point_found(i))
-        throw InputError("The point " + point_text(points[i]) +
-                           " (probe " + std::to_string(i + 1) +
+        throw InputError("The point " + point_text(points[i]) + " (probe " +
+                           std::to_string(i + 1) +
                            ") of <Output/Probe points> lies outside the body.",
                          exit_inconsistent);
   }
@@ -94,12 +94,12 @@ namespace dualcontact
             value.displacement = u[i];
             value.stress       = stress_from_gradient(grad[i], lambda, mu);
             value.stress_zz    = out_of_plane_stress(grad[i], lambda);
-            value.von_mises    = von_mises_stress(value.stress, value.stress_zz);
+            value.von_mises = von_mises_stress(value.stress, value.stress_zz);
           }
         else // a later mesh lost the point (a curved boundary): no value
           {
-            const double nan   = std::numeric_limits<double>::quiet_NaN();
-            value.displacement = Tensor<1, dim>();
+            const double nan      = std::numeric_limits<double>::quiet_NaN();
+            value.displacement    = Tensor<1, dim>();
             value.displacement[0] = nan;
             value.stress[0][0]    = nan;
             value.stress_zz       = nan;

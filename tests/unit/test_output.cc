@@ -118,10 +118,10 @@ TEST_CASE("Probes in the patch scene find the exact displacement and the "
   // the boundary, on a corner and on cell faces (probably between ranks).
   const std::vector<Point<2>> points = {
     {0.5, 0.5}, {2., 1.}, {1.3, 0.2}, {0., 0.}, {1., 0.25}};
-  Run run("patch.prm",
+  Run                run("patch.prm",
           overlay("Output",
                   "  set Probe points = 0.5, 0.5; 2, 1; 1.3, 0.2; 0, 0; 1, "
-                  "0.25\n"));
+                                 "0.25\n"));
   const auto        &values   = run.problem->get_probes().values();
   const unsigned int n_cycles = run.problem->results().size();
   REQUIRE(n_cycles == 2);
@@ -133,10 +133,10 @@ TEST_CASE("Probes in the patch scene find the exact displacement and the "
     {
       const auto &v = values[i];
       CHECK(v.cycle == i / points.size());
-      point_error = std::max(point_error, v.point.distance(points[v.probe]));
-      u_error     = std::max({u_error,
-                          std::abs(v.displacement[0]),
-                          std::abs(v.displacement[1] + v.point[1] / 1000.)});
+      point_error  = std::max(point_error, v.point.distance(points[v.probe]));
+      u_error      = std::max({u_error,
+                               std::abs(v.displacement[0]),
+                               std::abs(v.displacement[1] + v.point[1] / 1000.)});
       stress_error = std::max({stress_error,
                                std::abs(v.stress[0][0]),
                                std::abs(v.stress[1][1] + 1.),
@@ -170,8 +170,7 @@ TEST_CASE("Probes in the patch scene find the exact displacement and the "
       CHECK(csv.number(r, "probe") == probe + 1);
       CHECK(csv.number(r, "x") == points[probe][0]);
       CHECK(csv.number(r, "y") == points[probe][1]);
-      CHECK(std::abs(csv.number(r, "u_y") + points[probe][1] / 1000.) <
-            1e-11);
+      CHECK(std::abs(csv.number(r, "u_y") + points[probe][1] / 1000.) < 1e-11);
       CHECK(std::abs(csv.number(r, "sigma_yy") + 1.) < 1e-8);
       CHECK(std::abs(csv.number(r, "von_mises") - 1.) < 1e-8);
     }
@@ -222,23 +221,16 @@ TEST_CASE("contact_NN.csv has one row per contact node along Gamma_C, "
           "[output][contact]")
 {
   // prm/sliding_block.prm: normal and tangential load, partial slip
-  Run run("sliding_block.prm",
+  Run                run("sliding_block.prm",
           overlay("Refinement", "  set Number of cycles = 1\n"));
   const CycleResult &last = run.last();
   REQUIRE(last.solve.n_slip > 0);
   REQUIRE(last.solve.n_stick > 0);
   const Csv csv(file_of_rank_0(cycle_file(run.directory, 0)));
-  CHECK(csv.header == std::vector<std::string>{"s",
-                                               "x",
-                                               "y",
-                                               "weight",
-                                               "l1",
-                                               "l2",
-                                               "g",
-                                               "gap",
-                                               "n_x",
-                                               "n_y",
-                                               "status"});
+  CHECK(
+    csv.header ==
+    std::vector<std::string>{
+      "s", "x", "y", "weight", "l1", "l2", "g", "gap", "n_x", "n_y", "status"});
   REQUIRE(csv.rows.size() == last.solve.n_contact_nodes);
 
   double       force = 0., tangential = 0., max_l1 = 0.;
@@ -292,7 +284,7 @@ TEST_CASE("contact_NN.csv has the exact pressure where the scene gives one",
   for (std::size_t r = 0; r < csv.rows.size(); ++r)
     {
       const double x = csv.number(r, "x");
-      error = std::max(error,
+      error          = std::max(error,
                        std::abs(csv.number(r, "exact_pressure") -
                                 54.94505494505495 *
                                   std::sqrt(std::max(0., 1 - x * x / 0.01))));
@@ -314,10 +306,8 @@ TEST_CASE("contact_NN.csv is the same on all ranks and on one",
   const Csv a(file_of_rank_0(cycle_file(world.directory, 0)));
   const Csv b(read_text(cycle_file(alone.directory, 0)));
   REQUIRE(a.header == b.header);
-  REQUIRE(Utilities::MPI::min(b.rows.size(), MPI_COMM_WORLD) ==
-          a.rows.size());
-  REQUIRE(Utilities::MPI::max(b.rows.size(), MPI_COMM_WORLD) ==
-          a.rows.size());
+  REQUIRE(Utilities::MPI::min(b.rows.size(), MPI_COMM_WORLD) == a.rows.size());
+  REQUIRE(Utilities::MPI::max(b.rows.size(), MPI_COMM_WORLD) == a.rows.size());
   // the same nodes in the same order with the same status; the figures
   // to the solver's tolerance, relative to the column's largest value
   unsigned int n_different = 0;
@@ -360,8 +350,7 @@ TEST_CASE("The contact fields are written on Gamma_C only, a .pvd lists "
               "  set Directory = " + directory +
                 "\n  set Write vtu = true\n  set Probe points = 1, 0.5\n") +
         overlay("Refinement",
-                "  set Number of cycles = " + std::to_string(n_cycles) +
-                  "\n"));
+                "  set Number of cycles = " + std::to_string(n_cycles) + "\n"));
     std::ostringstream screen;
     ContactProblem<2>  problem(parameters, MPI_COMM_WORLD, screen);
     problem.run();
@@ -395,7 +384,7 @@ TEST_CASE("The contact fields are written on Gamma_C only, a .pvd lists "
     {
       const std::string pvd = file_of_rank_0(directory + "/" + name + ".pvd");
       std::vector<std::string> listed;
-      const std::regex         dataset("timestep=\"([0-9]+)\"[^>]*file=\"([^\"]+)\"");
+      const std::regex dataset("timestep=\"([0-9]+)\"[^>]*file=\"([^\"]+)\"");
       for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), dataset);
            it != std::sregex_iterator();
            ++it)
@@ -433,9 +422,12 @@ TEST_CASE("The contact fields are written on Gamma_C only, a .pvd lists "
            it != std::sregex_iterator();
            ++it)
         {
-          const std::string vtu = file_of_rank_0(directory + "/" + (*it)[1].str());
-          std::smatch       cells;
-          REQUIRE(std::regex_search(vtu, cells, std::regex("NumberOfCells=\"([0-9]+)\"")));
+          const std::string vtu =
+            file_of_rank_0(directory + "/" + (*it)[1].str());
+          std::smatch cells;
+          REQUIRE(std::regex_search(vtu,
+                                    cells,
+                                    std::regex("NumberOfCells=\"([0-9]+)\"")));
           n_faces += std::stoi(cells[1].str());
         }
       CHECK(n_faces == 4u << cycle);
