@@ -16,6 +16,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <dualcontact/contact_functions.h>
+#include <dualcontact/contact_output.h>
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/output_directory.h>
@@ -54,6 +55,7 @@ namespace dualcontact
       , newton(parameters.solver, elastic_solver)
       , uzawa(parameters.solver, newton)
       , threshold_iteration(parameters.friction, uzawa)
+      , probes(parameters.output.probe_points)
   {}
 
   // The algorithm: on each mesh of a nested sequence, set up, carry the
@@ -124,6 +126,8 @@ namespace dualcontact
     size.warn(triangulation.n_global_active_cells());
     scene.check_rigid_motions(triangulation);
     check_initial_position(triangulation, scene);
+    // a probe outside the body is bad input: found before the first solve
+    probes.check_inside(mapping, triangulation);
   }
 
   template <int dim>
@@ -642,26 +646,63 @@ namespace dualcontact
   void
   ContactProblem<dim>::output_results(const unsigned int cycle)
   {
+    TimerOutput::Scope t(computing_timer, "output results");
+    const std::string &directory = parameters.output.directory;
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+
     // The first file is written only now: a run that fails on its first
     // mesh (bad input found late, no equilibrium) writes nothing. run()
     // made the folder; a program that calls the phases itself may not have.
+    // The files of an earlier run go first: the last cycles of a longer run
+    // must not stand next to this run's.
     if (cycle == 0)
       {
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        if (root)
           {
-            std::filesystem::create_directories(parameters.output.directory);
+            std::filesystem::create_directories(directory);
+            OutputDirectory::remove_earlier_results(directory);
             if (!recorded_parameters.empty())
-              std::ofstream(parameters.output.directory + "/parameters.prm")
+              std::ofstream(directory + "/parameters.prm")
                 << recorded_parameters;
           }
         MPI_Barrier(mpi_communicator);
+        pvtu_records.clear();
+        contact_pvtu_records.clear();
       }
+
+    // the probes: all cycles so far
+    probes.evaluate(cycle, mapping, dof_handler, solution, parameters.material);
+    if (root && !probes.empty())
+      probes.write_csv(directory + "/probes.csv");
+
+    // one row per contact node, gathered on rank 0
+    const bool contact = scene.effects().contact;
+    if (contact)
+      {
+        const std::vector<ContactNodeRow<dim>> rows =
+          gather_contact_rows(contact_set, solution, mpi_communicator);
+        if (root)
+          write_contact_csv(directory + "/contact_" +
+                              Utilities::int_to_string(cycle, 2) + ".csv",
+                            rows,
+                            contact_set.law->has_friction(),
+                            scene.exact_pressure());
+      }
+
     if (!parameters.output.write_vtu)
       return;
-    TimerOutput::Scope t(computing_timer, "output results");
+    // zlib's fastest level: best_compression (deal.II's default) took
+    // most of the output's time for files a few percent smaller
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
 
+    // The volume: displacement, stress and von Mises stress (from one
+    // evaluation of the gradient per point), the owning rank, and the
+    // refinement indicator with adaptive refinement. The contact fields
+    // live on Gamma_C only, in the boundary output below.
     StressPostprocessor<dim> stress(parameters.material);
     DataOut<dim>             data_out;
+    data_out.set_flags(flags);
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(
       solution,
@@ -679,96 +720,40 @@ namespace dualcontact
     // next are those with the largest values)
     if (parameters.refinement.strategy != RefinementStrategy::global)
       data_out.add_data_vector(refinement_indicator(), "refinement_indicator");
-
-    // Nodal fields on Gamma_C, on a scalar copy of the element: contact
-    // pressure l1, gap g0 - u_n, status (-1 not a contact node, 0 separated,
-    // 1 in contact and sticking, 2 slipping), tangential traction l2,
-    // friction threshold g, tangential slip u_t (2D: along t; 3D: their
-    // magnitudes). Zero away from Gamma_C.
-    DoFHandler<dim> scalar_dof_handler(triangulation);
-    const FE_Q<dim> scalar_fe(fe.degree);
-    std::array<TrilinosWrappers::MPI::Vector, 6> contact_fields;
-    if (scene.effects().contact)
-      {
-        scalar_dof_handler.distribute_dofs(scalar_fe);
-        const IndexSet owned = scalar_dof_handler.locally_owned_dofs();
-        IndexSet       relevant;
-        DoFTools::extract_locally_relevant_dofs(scalar_dof_handler, relevant);
-        std::array<TrilinosWrappers::MPI::Vector, 6> owned_fields;
-        for (auto &f : owned_fields)
-          f.reinit(owned, mpi_communicator);
-        owned_fields[2] = -1.;
-
-        std::map<types::global_dof_index, unsigned int> node_of_dof;
-        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-          node_of_dof[contact_set.nodes[s].dofs[0]] = s;
-        std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell());
-        std::vector<types::global_dof_index> scalar_dofs(
-          scalar_fe.n_dofs_per_cell());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(vector_dofs);
-              typename DoFHandler<dim>::active_cell_iterator(
-                &triangulation,
-                cell->level(),
-                cell->index(),
-                &scalar_dof_handler)
-                ->get_dof_indices(scalar_dofs);
-              for (unsigned int i = 0; i < scalar_dofs.size(); ++i)
-                {
-                  const auto it = node_of_dof.find(
-                    vector_dofs[fe.component_to_system_index(0, i)]);
-                  if (it == node_of_dof.end() ||
-                      !owned.is_element(scalar_dofs[i]))
-                    continue;
-                  const unsigned int s            = it->second;
-                  const double       l1           = contact_set.l1[s];
-                  owned_fields[0][scalar_dofs[i]] = l1;
-                  owned_fields[1][scalar_dofs[i]] =
-                    contact_set.nodes[s].gap0 -
-                    contact_set.normal_displacement(solution, s);
-                  owned_fields[2][scalar_dofs[i]] = contact_set.status(s);
-                  const Tensor<1, dim - 1> vt =
-                    contact_set.tangential_displacement(solution, s);
-                  owned_fields[3][scalar_dofs[i]] =
-                    dim == 2 ? contact_set.l2[s][0] : contact_set.l2[s].norm();
-                  owned_fields[4][scalar_dofs[i]] = contact_set.threshold[s];
-                  owned_fields[5][scalar_dofs[i]] =
-                    dim == 2 ? vt[0] : vt.norm();
-                }
-            }
-        const char *names[] = {"contact_pressure",
-                               "gap",
-                               "contact_status",
-                               "tangential_traction",
-                               "friction_threshold",
-                               "tangential_slip"};
-        for (unsigned int f = 0; f < owned_fields.size(); ++f)
-          {
-            owned_fields[f].compress(VectorOperation::insert);
-            contact_fields[f].reinit(owned, relevant, mpi_communicator);
-            contact_fields[f] = owned_fields[f];
-            data_out.add_data_vector(scalar_dof_handler,
-                                     contact_fields[f],
-                                     names[f]);
-          }
-      }
     data_out.build_patches(mapping, fe.degree);
 
-    const std::string pvtu =
-      data_out.write_vtu_with_pvtu_record(parameters.output.directory + "/",
-                                          "solution",
-                                          cycle,
-                                          mpi_communicator,
-                                          2);
-
-    // a .pvd record over all cycles so ParaView shows them as a sequence
-    pvtu_records.emplace_back(cycle, pvtu);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    // a .pvd record over all cycles so that ParaView shows them as a
+    // sequence
+    pvtu_records.emplace_back(
+      cycle,
+      data_out.write_vtu_with_pvtu_record(
+        directory + "/", "solution", cycle, mpi_communicator, 2));
+    if (root)
       {
-        std::ofstream pvd(parameters.output.directory + "/solution.pvd");
+        std::ofstream pvd(directory + "/solution.pvd");
         DataOutBase::write_pvd_record(pvd, pvtu_records);
+      }
+
+    // Gamma_C: the contact fields on its faces (contact_output.h)
+    if (contact)
+      {
+        ContactBoundaryOutput<dim> boundary;
+        boundary.set_flags(flags);
+        boundary.build_patches(dof_handler,
+                               scene.ids_with(BoundaryCondition::contact),
+                               contact_set,
+                               solution,
+                               hanging_node_constraints,
+                               locally_relevant_dofs);
+        contact_pvtu_records.emplace_back(
+          cycle,
+          boundary.write_vtu_with_pvtu_record(
+            directory + "/", "contact", cycle, mpi_communicator, 2));
+        if (root)
+          {
+            std::ofstream pvd(directory + "/contact.pvd");
+            DataOutBase::write_pvd_record(pvd, contact_pvtu_records);
+          }
       }
   }
 

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <regex>
 
 namespace dualcontact
 {
@@ -62,5 +63,26 @@ namespace dualcontact
         std::filesystem::remove(folder, error);
       else
         break;
+  }
+
+  unsigned int
+  OutputDirectory::remove_earlier_results(const std::string &directory)
+  {
+    // the names of ContactProblem::output_results() and Report
+    static const std::regex ours(
+      "(solution|contact)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu)|"
+      "contact_[0-9]+\\.csv|(solution|contact)\\.pvd|"
+      "(probes|cycles|iterations)\\.csv|parameters\\.prm");
+    std::error_code                    error;
+    std::vector<std::filesystem::path> old;
+    for (const auto &entry :
+         std::filesystem::directory_iterator(directory, error))
+      if (entry.is_regular_file(error) &&
+          std::regex_match(entry.path().filename().string(), ours))
+        old.push_back(entry.path());
+    unsigned int removed = 0;
+    for (const std::filesystem::path &file : old)
+      removed += std::filesystem::remove(file, error) ? 1 : 0;
+    return removed;
   }
 } // namespace dualcontact

@@ -889,6 +889,18 @@ namespace dualcontact
       "results; detailed: also one line per Newton step with its CG "
       "iterations. Warnings and errors are always shown; cycles.csv and "
       "iterations.csv hold everything at every level.");
+    prm.declare_entry(
+      "Probe points",
+      "",
+      Patterns::List(Patterns::List(Patterns::Double(), 2, 3, ","),
+                     0,
+                     Patterns::List::max_int_value,
+                     ";"),
+      "Points of the body [length] at which the displacement [length] and "
+      "the stress [stress] are written to probes.csv for every cycle, as "
+      "'x, y; x, y' (3D: 'x, y, z; ...'). Each must lie in the body (its "
+      "boundary included): a point outside is an input error, found on the "
+      "first mesh. Empty: no probes.");
     prm.leave_subsection();
   }
 
@@ -903,6 +915,11 @@ namespace dualcontact
     verbosity               = level == "quiet"    ? Verbosity::quiet :
                               level == "detailed" ? Verbosity::detailed :
                                                     Verbosity::normal;
+    probe_points.clear();
+    for (const std::string &point :
+         Utilities::split_string_list(prm.get("Probe points"), ';'))
+      if (!point.empty())
+        probe_points.push_back(parse_doubles(point));
     prm.leave_subsection();
     if (directory.empty())
       throw InputError("The entry <Output/Directory> must not be empty.",
@@ -1054,6 +1071,15 @@ namespace dualcontact
                            std::to_string(values.size()) + ".",
                          exit_inconsistent);
     };
+
+    for (unsigned int i = 0; i < output.probe_points.size(); ++i)
+      if (output.probe_points[i].size() != dim)
+        throw InputError("The point " + std::to_string(i + 1) +
+                           " of <Output/Probe points> has " +
+                           std::to_string(output.probe_points[i].size()) +
+                           " coordinates, not " + std::to_string(dim) +
+                           " (one per dimension).",
+                         exit_inconsistent);
 
     if (geometry.type == GeometryType::rectangle)
       {

@@ -30,25 +30,13 @@ namespace dualcontact
         Tensor<2, dim> grad;
         for (unsigned int d = 0; d < dim; ++d)
           grad[d] = inputs.solution_gradients[p][d];
-        const SymmetricTensor<2, dim> eps       = symmetrize(grad);
-        const double                  trace_eps = trace(eps);
         const SymmetricTensor<2, dim> sigma =
-          lambda * trace_eps * unit_symmetric_tensor<dim>() + 2. * mu * eps;
-
+          stress_from_gradient(grad, lambda, mu);
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             computed_quantities[p](i * dim + j) = sigma[i][j];
-
-        // von Mises from the deviator of the full 3x3 stress; in plane
-        // strain sigma_zz = lambda tr(eps).
-        SymmetricTensor<2, 3> s3;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = i; j < dim; ++j)
-            s3[i][j] = sigma[i][j];
-        if (dim == 2)
-          s3[2][2] = lambda * trace_eps;
         computed_quantities[p](dim * dim) =
-          std::sqrt(1.5) * deviator(s3).norm();
+          von_mises_stress(sigma, out_of_plane_stress(grad, lambda));
       }
   }
 

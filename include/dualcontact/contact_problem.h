@@ -28,6 +28,7 @@
 #include <dualcontact/figures.h>
 #include <dualcontact/newton_solver.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/probes.h>
 #include <dualcontact/report.h>
 #include <dualcontact/scene.h>
 #include <dualcontact/threshold_iteration.h>
@@ -138,9 +139,23 @@ namespace dualcontact
     ErrorNorms
     postprocess() const;
 
-    /** The vtu/pvtu/pvd output of this cycle (if asked for). */
+    /**
+     * The files of this cycle: probes.csv (every cycle so far), with contact
+     * contact_NN.csv (one row per contact node), and if asked for the
+     * volume fields (solution_NN.pvtu, solution.pvd) and the contact fields
+     * on Gamma_C (contact_NN.pvtu, contact.pvd). On the first cycle the
+     * files of an earlier run in the output folder are removed first and
+     * parameters.prm is written.
+     */
     void
     output_results(const unsigned int cycle);
+
+    /** The probe points and what they found on every cycle so far. */
+    const Probes<dim> &
+    get_probes() const
+    {
+      return probes;
+    }
 
     /** Mark (globally or by an indicator), prepare the transfer, refine. */
     void
@@ -304,8 +319,13 @@ namespace dualcontact
     Vector<float> indicator;
     bool          indicator_valid = false;
 
-    // the (cycle, file) list of the .pvd record
+    // the probe points, checked on the first mesh
+    Probes<dim> probes;
+
+    // the (cycle, file) lists of the .pvd records of the volume and of the
+    // contact boundary
     std::vector<std::pair<double, std::string>> pvtu_records;
+    std::vector<std::pair<double, std::string>> contact_pvtu_records;
     std::string                                 recorded_parameters;
   };
 } // namespace dualcontact

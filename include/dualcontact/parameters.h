@@ -238,6 +238,9 @@ namespace dualcontact
     bool        write_vtu    = true;
     bool        print_timing = true;
     Verbosity   verbosity    = Verbosity::normal;
+    // <Output/Probe points>: each point with its coordinates (dim of them,
+    // checked against the dimension with the other entries)
+    std::vector<std::vector<double>> probe_points;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -3,6 +3,9 @@
 #ifndef dualcontact_postprocess_h
 #define dualcontact_postprocess_h
 
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/mapping.h>
@@ -14,11 +17,54 @@
 #include <dualcontact/figures.h>
 #include <dualcontact/parameters.h>
 
+#include <cmath>
 #include <set>
 
 namespace dualcontact
 {
   using namespace dealii;
+
+  /**
+   * The Cauchy stress sigma = lambda tr(eps) I + 2 mu eps, eps the symmetric
+   * part of the displacement gradient.
+   */
+  template <int dim>
+  inline SymmetricTensor<2, dim>
+  stress_from_gradient(const Tensor<2, dim> &gradient,
+                       const double          lambda,
+                       const double          mu)
+  {
+    const SymmetricTensor<2, dim> eps = symmetrize(gradient);
+    return lambda * trace(eps) * unit_symmetric_tensor<dim>() + 2. * mu * eps;
+  }
+
+  /**
+   * The out-of-plane stress of plane strain, sigma_zz = lambda tr(eps) (2D;
+   * in 3D it is a component of the stress and this returns 0).
+   */
+  template <int dim>
+  inline double
+  out_of_plane_stress(const Tensor<2, dim> &gradient, const double lambda)
+  {
+    return dim == 2 ? lambda * trace(gradient) : 0.;
+  }
+
+  /**
+   * The von Mises stress sqrt(3/2) |dev sigma| of the full 3x3 stress: in 2D
+   * (plane strain) with sigma_zz from out_of_plane_stress().
+   */
+  template <int dim>
+  inline double
+  von_mises_stress(const SymmetricTensor<2, dim> &sigma, const double sigma_zz)
+  {
+    SymmetricTensor<2, 3> s3;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        s3[i][j] = sigma[i][j];
+    if (dim == 2)
+      s3[2][2] = sigma_zz;
+    return std::sqrt(1.5) * deviator(s3).norm();
+  }
 
   /**
    * Cauchy stress sigma = lambda tr(eps) I + 2 mu eps as a tensor field, and

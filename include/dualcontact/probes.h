@@ -1,0 +1,108 @@
+// Probe points (<Output/Probe points>): the displacement and the stress at
+// given points of the body, for every cycle, written to probes.csv.
+#ifndef dualcontact_probes_h
+#define dualcontact_probes_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dualcontact/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * The probe points of a run and the values found at them. The points are
+   * located in the distributed mesh with
+   * Utilities::MPI::RemotePointEvaluation, so a point may lie in a cell of
+   * any rank; every rank asks for every point and gets every value, so all
+   * ranks hold the same values.
+   */
+  template <int dim>
+  class Probes
+  {
+  public:
+    /** What a probe found on one cycle. */
+    struct Value
+    {
+      unsigned int            cycle = 0;
+      unsigned int            probe = 0; // its index in the entry, from 0
+      Point<dim>              point;
+      Tensor<1, dim>          displacement;
+      SymmetricTensor<2, dim> stress;
+      double                  stress_zz = 0.; // 2D: plane strain lambda tr(eps)
+      double                  von_mises = 0.;
+    };
+
+    /** The points of <Output/Probe points> (each with dim coordinates). */
+    explicit Probes(const std::vector<std::vector<double>> &coordinates);
+
+    bool
+    empty() const
+    {
+      return points.empty();
+    }
+
+    const std::vector<Point<dim>> &
+    get_points() const
+    {
+      return points;
+    }
+
+    /**
+     * Throws InputError (exit_inconsistent), naming <Output/Probe points>
+     * and the first point that no cell of `triangulation` holds: a point
+     * outside the body. A point on the boundary is inside. Collective.
+     */
+    void
+    check_inside(const Mapping<dim>       &mapping,
+                 const Triangulation<dim> &triangulation) const;
+
+    /**
+     * The displacement and the stress sigma = lambda tr(eps) I + 2 mu eps at
+     * every point (averaged over the cells that share a point on their
+     * common face), added to values() as the rows of `cycle`. `solution` is
+     * ghosted. Collective.
+     */
+    void
+    evaluate(const unsigned int                   cycle,
+             const Mapping<dim>                  &mapping,
+             const DoFHandler<dim>               &dof_handler,
+             const TrilinosWrappers::MPI::Vector &solution,
+             const MaterialParameters            &material);
+
+    /** Every value of every cycle so far, by cycle, then by probe. */
+    const std::vector<Value> &
+    values() const
+    {
+      return all_values;
+    }
+
+    /**
+     * Write values() as CSV: one row per cycle and probe, the columns
+     * cycle, probe, x, y, (z), u_x, u_y, (u_z), sigma_xx, sigma_yy,
+     * sigma_zz, sigma_xy, (sigma_xz, sigma_yz), von_mises. Call on one rank.
+     */
+    void
+    write_csv(const std::string &filename) const;
+
+  private:
+    std::vector<Point<dim>> points;
+    std::vector<Value>      all_values;
+  };
+} // namespace dualcontact
+
+#endif

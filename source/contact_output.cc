@@ -1,0 +1,276 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/grid/reference_cell.h>
+
+#include <dualcontact/contact_output.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+
+namespace dualcontact
+{
+  namespace
+  {
+    // a number for the CSV files: -0 (a normal's zero component) as 0
+    inline double
+    tidy(const double x)
+    {
+      return x + 0.;
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<ContactNodeRow<dim>>
+  gather_contact_rows(const ContactSet<dim>               &contact_set,
+                      const TrilinosWrappers::MPI::Vector &displacement,
+                      const MPI_Comm                       comm)
+  {
+    // each row as 3 dim + 5 numbers, gathered on rank 0
+    constexpr unsigned int stride = 3 * dim + 5;
+    std::vector<double>    local;
+    local.reserve(stride * contact_set.n_local_nodes());
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        const ContactNode<dim> &node = contact_set.nodes[s];
+        Tensor<1, dim>          l2;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          l2 += contact_set.l2[s][k] * node.tangents[k];
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(node.position[d]);
+        local.push_back(node.weight);
+        local.push_back(contact_set.l1[s]);
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(l2[d]);
+        local.push_back(contact_set.threshold[s]);
+        local.push_back(node.gap0 -
+                        contact_set.normal_displacement(displacement, s));
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(node.normal[d]);
+        local.push_back(contact_set.status(s));
+      }
+
+    std::vector<ContactNodeRow<dim>>       rows;
+    const std::vector<std::vector<double>> all =
+      Utilities::MPI::gather(comm, local, 0);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return rows;
+    for (const std::vector<double> &part : all)
+      for (std::size_t i = 0; i + stride <= part.size(); i += stride)
+        {
+          const double       *x = part.data() + i;
+          ContactNodeRow<dim> row;
+          for (unsigned int d = 0; d < dim; ++d)
+            row.position[d] = *x++;
+          row.weight = *x++;
+          row.l1     = *x++;
+          for (unsigned int d = 0; d < dim; ++d)
+            row.l2[d] = *x++;
+          row.threshold = *x++;
+          row.gap       = *x++;
+          for (unsigned int d = 0; d < dim; ++d)
+            row.normal[d] = *x++;
+          row.status = static_cast<unsigned int>(*x++);
+          row.along  = row.position * contact_set.tangents[0];
+          rows.push_back(row);
+        }
+    // along the boundary; in 3D along the first mean tangent, then the
+    // second
+    std::sort(rows.begin(),
+              rows.end(),
+              [&contact_set](const ContactNodeRow<dim> &a,
+                             const ContactNodeRow<dim> &b) {
+                if (a.along != b.along)
+                  return a.along < b.along;
+                return a.position * contact_set.tangents[dim - 2] <
+                       b.position * contact_set.tangents[dim - 2];
+              });
+    return rows;
+  }
+
+  template <int dim>
+  void
+  write_contact_csv(const std::string                      &filename,
+                    const std::vector<ContactNodeRow<dim>> &rows,
+                    const bool                              friction,
+                    const Function<dim>                    *exact_pressure)
+  {
+    static const char axis[] = "xyz";
+    std::ofstream     csv(filename);
+    csv << "s";
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << ',' << axis[d];
+    csv << ",weight,l1";
+    if (dim == 2)
+      csv << ",l2";
+    else
+      for (unsigned int d = 0; d < dim; ++d)
+        csv << ",l2_" << axis[d];
+    csv << ",g,gap";
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << ",n_" << axis[d];
+    csv << ",status";
+    if (exact_pressure != nullptr)
+      csv << ",exact_pressure";
+    csv << '\n' << std::setprecision(12);
+
+    const char *status_names[] = {"separated",
+                                  friction ? "stick" : "contact",
+                                  "slip"};
+    for (const ContactNodeRow<dim> &row : rows)
+      {
+        csv << tidy(row.along);
+        for (unsigned int d = 0; d < dim; ++d)
+          csv << ',' << tidy(row.position[d]);
+        csv << ',' << row.weight << ',' << tidy(row.l1);
+        if (dim == 2) // along t_s = (-n_y, n_x)
+          csv << ','
+              << tidy(-row.l2[0] * row.normal[1] + row.l2[1] * row.normal[0]);
+        else
+          for (unsigned int d = 0; d < dim; ++d)
+            csv << ',' << tidy(row.l2[d]);
+        csv << ',' << tidy(row.threshold) << ',' << tidy(row.gap);
+        for (unsigned int d = 0; d < dim; ++d)
+          csv << ',' << tidy(row.normal[d]);
+        csv << ',' << status_names[std::min(row.status, 2u)];
+        if (exact_pressure != nullptr)
+          csv << ',' << tidy(exact_pressure->value(row.position));
+        csv << '\n';
+      }
+  }
+
+  template <int dim>
+  void
+  ContactBoundaryOutput<dim>::build_patches(
+    const DoFHandler<dim>               &dof_handler,
+    const std::set<types::boundary_id>  &contact_ids,
+    const ContactSet<dim>               &contact_set,
+    const TrilinosWrappers::MPI::Vector &displacement,
+    const AffineConstraints<double>     &hanging_node_constraints,
+    const IndexSet                      &locally_relevant_dofs)
+  {
+    const bool friction =
+      contact_set.law != nullptr && contact_set.law->has_friction();
+    // The nodal values, packed dim to a vector of the displacement element
+    // at the node's DoFs: the scalars, then the vectors. The status is
+    // stored plus one, so that a node that is no contact node reads -1.
+    std::vector<std::string> scalars = {"contact_pressure",
+                                        "gap",
+                                        "contact_status"};
+    std::vector<std::string> vectors = {"normal", "tangential_slip"};
+    if (friction)
+      {
+        scalars.insert(scalars.begin() + 1, "friction_threshold");
+        vectors.emplace_back("tangential_traction");
+      }
+    const unsigned int n_packed = scalars.size() + dim * vectors.size();
+    const unsigned int n_slots  = (n_packed + dim - 1) / dim;
+
+    const MPI_Comm  comm  = dof_handler.get_triangulation().get_communicator();
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    std::vector<TrilinosWrappers::MPI::Vector> packed(n_slots);
+    for (auto &slot : packed)
+      slot.reinit(owned, comm);
+    std::vector<double> values(n_packed);
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        const ContactNode<dim> &node = contact_set.nodes[s];
+        unsigned int            q    = 0;
+        values[q++]                  = contact_set.l1[s];
+        if (friction)
+          values[q++] = contact_set.threshold[s];
+        values[q++] =
+          node.gap0 - contact_set.normal_displacement(displacement, s);
+        values[q++] = contact_set.status(s) + 1.;
+        const Tensor<1, dim - 1> vt =
+          contact_set.tangential_displacement(displacement, s);
+        Tensor<1, dim> slip, traction;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          {
+            slip += vt[k] * node.tangents[k];
+            traction += contact_set.l2[s][k] * node.tangents[k];
+          }
+        for (const Tensor<1, dim> &v : {node.normal, slip, traction})
+          for (unsigned int d = 0; d < dim && q < n_packed; ++d)
+            values[q++] = v[d];
+        for (q = 0; q < n_packed; ++q)
+          packed[q / dim][node.dofs[q % dim]] = values[q];
+      }
+    for (auto &slot : packed)
+      {
+        slot.compress(VectorOperation::insert);
+        // hanging nodes on Gamma_C: the interpolation of their masters
+        hanging_node_constraints.distribute(slot);
+        TrilinosWrappers::MPI::Vector owned_slot = slot;
+        slot.reinit(owned, locally_relevant_dofs, comm);
+        slot = owned_slot;
+      }
+
+    // the names: the scalars, the vectors, then the displacement
+    names = scalars;
+    vector_ranges.clear();
+    vectors.emplace_back("displacement");
+    for (const std::string &name : vectors)
+      {
+        vector_ranges.emplace_back(
+          names.size(),
+          names.size() + dim - 1,
+          name,
+          DataComponentInterpretation::component_is_part_of_vector);
+        names.insert(names.end(), dim, name);
+      }
+    const unsigned int status_row = friction ? 3 : 2;
+
+    // one patch per contact face of a locally owned cell
+    patches.clear();
+    constexpr unsigned int n_vertices =
+      GeometryInfo<dim - 1>::vertices_per_cell;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()))
+            {
+              const auto                       face = cell->face(f);
+              DataOutBase::Patch<dim - 1, dim> patch;
+              patch.reference_cell = ReferenceCells::get_hypercube<dim - 1>();
+              patch.n_subdivisions = 1;
+              patch.patch_index    = patches.size();
+              patch.points_are_available = false;
+              patch.data.reinit(names.size(), n_vertices);
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                {
+                  patch.vertices[v] = face->vertex(v);
+                  for (unsigned int q = 0; q < n_packed; ++q)
+                    patch.data(q, v) =
+                      packed[q / dim](face->vertex_dof_index(v, q % dim));
+                  patch.data(status_row, v) -= 1.;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    patch.data(n_packed + d, v) =
+                      displacement(face->vertex_dof_index(v, d));
+                }
+              patches.push_back(std::move(patch));
+            }
+  }
+
+  template std::vector<ContactNodeRow<2>>
+  gather_contact_rows(const ContactSet<2> &,
+                      const TrilinosWrappers::MPI::Vector &,
+                      const MPI_Comm);
+  template std::vector<ContactNodeRow<3>>
+  gather_contact_rows(const ContactSet<3> &,
+                      const TrilinosWrappers::MPI::Vector &,
+                      const MPI_Comm);
+  template void
+  write_contact_csv(const std::string &,
+                    const std::vector<ContactNodeRow<2>> &,
+                    const bool,
+                    const Function<2> *);
+  template void
+  write_contact_csv(const std::string &,
+                    const std::vector<ContactNodeRow<3>> &,
+                    const bool,
+                    const Function<3> *);
+  template class ContactBoundaryOutput<2>;
+  template class ContactBoundaryOutput<3>;
+} // namespace dualcontact
