@@ -21,11 +21,10 @@ namespace dualcontact
     /** What the elements of a Gmsh file are, counted by Gmsh's type number. */
     struct MshContents
     {
-      double                               version = 0.;
-      std::map<int, unsigned long>         n_elements; // type -> count
-      static constexpr int                 line = 1, triangle = 2, quad = 3,
-                           tetrahedron = 4, hexahedron = 5, prism = 6,
-                           pyramid = 7, point = 15;
+      double                       version = 0.;
+      std::map<int, unsigned long> n_elements; // type -> count
+      static constexpr int line = 1, triangle = 2, quad = 3, tetrahedron = 4,
+                           hexahedron = 5, prism = 6, pyramid = 7, point = 15;
       unsigned long
       count(const int type) const
       {
@@ -38,9 +37,9 @@ namespace dualcontact
     std::string
     name_of(const GeometryParameters &geometry)
     {
-      const std::string given =
-        geometry.mesh_file_given.empty() ? geometry.mesh_file :
-                                           geometry.mesh_file_given;
+      const std::string given = geometry.mesh_file_given.empty() ?
+                                  geometry.mesh_file :
+                                  geometry.mesh_file_given;
       return "<Geometry/Mesh file> '" + given + "'" +
              (given == geometry.mesh_file ? "" :
                                             " (" + geometry.mesh_file + ")");
@@ -61,10 +60,12 @@ namespace dualcontact
     MshContents
     scan_msh(std::istream &in, const GeometryParameters &geometry)
     {
-      const std::string file = name_of(geometry);
+      const std::string file       = name_of(geometry);
       const auto        not_a_mesh = [&](const std::string &why) {
-        return InputError("The file " + file + " is not a Gmsh mesh that can "
-                          "be read: " + why + ".",
+        return InputError("The file " + file +
+                            " is not a Gmsh mesh that can "
+                                   "be read: " +
+                            why + ".",
                           exit_cannot_read_file);
       };
       MshContents contents;
@@ -78,8 +79,9 @@ namespace dualcontact
       const bool format_2 = contents.version >= 2. && contents.version < 2.25;
       const bool format_4 = contents.version >= 4. && contents.version < 4.15;
       if (!format_2 && !format_4)
-        throw not_a_mesh("its format " + std::to_string(contents.version)
-                           .substr(0, 3) + " is neither 2.2 nor 4.1 (Gmsh: "
+        throw not_a_mesh("its format " +
+                         std::to_string(contents.version).substr(0, 3) +
+                         " is neither 2.2 nor 4.1 (Gmsh: "
                          "'gmsh -format msh41' or 'Mesh.MshFileVersion = "
                          "4.1;')");
       if (file_type != 0)
@@ -178,10 +180,9 @@ namespace dualcontact
                              "hexahedra (3D); set 'Mesh.ElementOrder = 1;'.",
                            exit_invalid_value);
 
-      const unsigned long n_3d_cells = n(MshContents::tetrahedron) +
-                                       n(MshContents::hexahedron) +
-                                       n(MshContents::prism) +
-                                       n(MshContents::pyramid);
+      const unsigned long n_3d_cells =
+        n(MshContents::tetrahedron) + n(MshContents::hexahedron) +
+        n(MshContents::prism) + n(MshContents::pyramid);
       const unsigned long n_2d_cells =
         n(MshContents::triangle) + n(MshContents::quad);
       if (dim == 2 && n_3d_cells > 0)
@@ -207,8 +208,7 @@ namespace dualcontact
             "split every triangle into quadrilaterals (doc/meshes.md).",
           exit_invalid_value);
       std::string not_hex;
-      for (const auto &[type, name] :
-           std::vector<std::pair<int, std::string>>{
+      for (const auto &[type, name] : std::vector<std::pair<int, std::string>>{
              {MshContents::tetrahedron, "tetrahedra"},
              {MshContents::prism, "prisms"},
              {MshContents::pyramid, "pyramids"},
@@ -321,12 +321,12 @@ namespace dualcontact
         const auto trace = what.find("Stacktrace:");
         if (trace != std::string::npos)
           what = what.substr(0, trace);
-        std::string line;
+        std::string        line;
         std::istringstream lines(what);
         std::string        message;
         while (std::getline(lines, line))
-          if (!line.empty() && line.find_first_not_of(" \t-") !=
-                                 std::string::npos)
+          if (!line.empty() &&
+              line.find_first_not_of(" \t-") != std::string::npos)
             message += (message.empty() ? "" : " ") +
                        line.substr(line.find_first_not_of(" \t"));
         if (message.size() > 300)
@@ -406,12 +406,12 @@ namespace dualcontact
                   {
                     std::ostringstream figures;
                     figures.precision(6);
-                    figures << distance << " from the "
-                            << (manifold.kind ==
-                                    BoundaryManifold::Kind::cylinder ?
-                                  "axis" :
-                                  "center")
-                            << ", not the radius " << manifold.radius;
+                    figures
+                      << distance << " from the "
+                      << (manifold.kind == BoundaryManifold::Kind::cylinder ?
+                            "axis" :
+                            "center")
+                      << ", not the radius " << manifold.radius;
                     throw InputError(
                       "The entry <Geometry/Manifolds> puts boundary id " +
                         std::to_string(manifold.id) + " on a " +

@@ -125,7 +125,7 @@ namespace dualcontact
           };
           if (colon == std::string::npos)
             throw bad("no 'id:' in front");
-          BoundaryManifold manifold;
+          BoundaryManifold  manifold;
           const std::string id_text = Utilities::trim(item.substr(0, colon));
           if (id_text.empty() ||
               id_text.find_first_not_of("0123456789") != std::string::npos ||
@@ -150,7 +150,7 @@ namespace dualcontact
 
           // keyword, then its numbers up to the next keyword
           std::map<std::string, std::vector<double>> values;
-          std::string                                 word, key;
+          std::string                                word, key;
           while (in >> word)
             {
               if (word == "center" || word == "radius" || word == "axis")
@@ -171,8 +171,9 @@ namespace dualcontact
                   used = 0;
                 }
               if (key.empty() || used != word.size() || !std::isfinite(value))
-                throw bad("'" + word + "' is neither a number nor one of "
-                                       "center, radius, axis");
+                throw bad("'" + word +
+                          "' is neither a number nor one of "
+                          "center, radius, axis");
               values[key].push_back(value);
             }
           if (values.count("center") == 0 || values.count("radius") == 0)
@@ -424,8 +425,8 @@ namespace dualcontact
     prm.enter_subsection("Geometry");
     dimension               = prm.get_integer("Dimension");
     const std::string shape = prm.get("Type");
-    type                    = shape == "rectangle"    ? GeometryType::rectangle :
-                              shape == "half disc"    ? GeometryType::half_disc :
+    type                    = shape == "rectangle" ? GeometryType::rectangle :
+                              shape == "half disc" ? GeometryType::half_disc :
                               shape == "quarter disc" ? GeometryType::quarter_disc :
                                                         GeometryType::mesh_file;
     lower_left              = parse_doubles(prm.get("Lower left corner"));
@@ -439,9 +440,9 @@ namespace dualcontact
     pre_refinement_steps    = prm.get_integer("Pre-refinement steps");
     pre_refinement_distance = prm.get_double("Pre-refinement distance");
     pre_refinement_grading  = prm.get_double("Pre-refinement grading");
-    mesh_file       = prm.get("Mesh file");
-    mesh_file_given = mesh_file;
-    manifolds       = parse_manifolds(prm.get("Manifolds"));
+    mesh_file               = prm.get("Mesh file");
+    mesh_file_given         = mesh_file;
+    manifolds               = parse_manifolds(prm.get("Manifolds"));
     prm.leave_subsection();
     // the patterns allow 0 (Patterns::Double has closed bounds), which
     // would fail late, inside deal.II's mesh or manifold code

@@ -140,11 +140,11 @@ TEST_CASE("A half disc read from Gmsh 2.2 and 4.1 files has the built-in half "
   std::vector<std::vector<std::tuple<unsigned int, double, double, double>>>
                             faces;
   std::vector<unsigned int> n_cells;
-  for (const std::string &text : {mesh_disc("half_disc.msh", true, 2),
-                                  mesh_disc("half_disc_v22.msh", true, 2),
-                                  built_in_disc +
-                                    "subsection Refinement\n  set Initial "
-                                    "global refinement = 2\nend\n"})
+  for (const std::string &text :
+       {mesh_disc("half_disc.msh", true, 2),
+        mesh_disc("half_disc_v22.msh", true, 2),
+        built_in_disc + "subsection Refinement\n  set Initial "
+                        "global refinement = 2\nend\n"})
     {
       Parameters parameters;
       parameters.read_string(text);
@@ -223,10 +223,8 @@ TEST_CASE("The 3D half cylinder has ids 0 to 3 and its curved faces stay on "
   std::map<unsigned int, unsigned int> n_faces;
   for (const auto &face : boundary_faces(mesh))
     ++n_faces[std::get<0>(face)];
-  CHECK(n_faces == std::map<unsigned int, unsigned int>{{0, 4 * 16},
-                                                        {1, 4 * 16},
-                                                        {2, 6 * 16},
-                                                        {3, 6 * 16}});
+  CHECK(n_faces == std::map<unsigned int, unsigned int>{
+                     {0, 4 * 16}, {1, 4 * 16}, {2, 6 * 16}, {3, 6 * 16}});
   CHECK(distance_from_circle(mesh) <= 1e-12);
   CHECK(smallest_measure(mesh) > 0.);
 }
@@ -241,12 +239,12 @@ TEST_CASE("Hertz on the read-in half disc: the pressure error matches the "
                              "  set Initial global refinement = 3\n"
                              "  set Number of cycles = 3\n"
                              "end\n";
-  Run built_in("hertz.prm", cycles);
-  Run read_in("mesh_hertz.prm",
+  Run               built_in("hertz.prm", cycles);
+  Run               read_in("mesh_hertz.prm",
               cycles + "subsection Geometry\n  set Mesh file = " +
                 mesh_path("half_disc.msh") + "\nend\n");
-  const auto &a = built_in.problem->results();
-  const auto &b = read_in.problem->results();
+  const auto       &a = built_in.problem->results();
+  const auto       &b = read_in.problem->results();
   REQUIRE(a.size() == 3);
   REQUIRE(b.size() == 3);
   for (unsigned int cycle = 0; cycle < 3; ++cycle)
@@ -325,18 +323,18 @@ TEST_CASE("A scene on a mesh file with a bad manifold or id is an input error "
       const Scene<2> scene(parameters);
     });
   };
-  const auto wrong_radius = error(
-    "subsection Geometry\n  set Manifolds = 0: circle center 0, 0 radius "
-    "1.01\nend\n");
+  const auto wrong_radius =
+    error("subsection Geometry\n  set Manifolds = 0: circle center 0, 0 radius "
+          "1.01\nend\n");
   CHECK(wrong_radius.code == exit_inconsistent);
   CHECK(wrong_radius.message.find("not the radius 1.01") != std::string::npos);
-  const auto sphere_in_2d = error(
-    "subsection Geometry\n  set Manifolds = 0: sphere center 0, 0 radius "
-    "1\nend\n");
+  const auto sphere_in_2d =
+    error("subsection Geometry\n  set Manifolds = 0: sphere center 0, 0 radius "
+          "1\nend\n");
   CHECK(sphere_in_2d.code == exit_inconsistent);
   CHECK(sphere_in_2d.message.find("in 2D use 'circle'") != std::string::npos);
-  const auto unknown_id = error(
-    "subsection Boundary conditions\n  set Conditions = 3: fixed\nend\n");
+  const auto unknown_id =
+    error("subsection Boundary conditions\n  set Conditions = 3: fixed\nend\n");
   CHECK(unknown_id.code == exit_inconsistent);
   CHECK(unknown_id.message.find("names boundary id 3") != std::string::npos);
 }
