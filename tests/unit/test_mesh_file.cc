@@ -338,3 +338,35 @@ TEST_CASE("A scene on a mesh file with a bad manifold or id is an input error "
   CHECK(unknown_id.code == exit_inconsistent);
   CHECK(unknown_id.message.find("names boundary id 3") != std::string::npos);
 }
+
+TEST_CASE("A sphere or a cylinder with the wrong axis on the half cylinder's "
+          "curved faces is an input error",
+          "[mesh][parameters]")
+{
+  for (const std::string manifold :
+       {"0: sphere center 0, 0, 0 radius 1",
+        "0: cylinder center 0, 0, 0 axis 1, 0, 0 radius 1"})
+    {
+      const auto error = catch_input_error([&]() {
+        Parameters parameters;
+        parameters.read_string("subsection Geometry\n"
+                               "  set Dimension = 3\n"
+                               "  set Type = mesh file\n"
+                               "  set Mesh file = " +
+                               mesh_path("half_cylinder.msh") +
+                               "\n"
+                               "  set Manifolds = " +
+                               manifold +
+                               "\n"
+                               "end\n"
+                               "subsection Boundary conditions\n"
+                               "  set Conditions = 0: fixed\n"
+                               "end\n");
+        const Scene<3> scene(parameters);
+      });
+      INFO(manifold << ": " << error.message);
+      CHECK(error.code == exit_inconsistent);
+      CHECK(error.message.find("The entry <Geometry/Manifolds> puts boundary "
+                               "id 0 on a ") != std::string::npos);
+    }
+}
