@@ -30,6 +30,7 @@ namespace dualcontact
   {
     const bool contact = !boundary.ids_with(BoundaryCondition::contact).empty();
     const bool rectangle = geometry.type == GeometryType::rectangle;
+    const bool mesh_file = geometry.type == GeometryType::mesh_file;
     const bool one_mesh  = refinement.n_cycles == 1;
     const auto law       = create_friction_law(friction.law);
     const std::string              law_entry           = law->parameter_entry();
@@ -40,10 +41,16 @@ namespace dualcontact
       "Maximum threshold steps"};
 
     std::vector<Rule> rules = {
-      {rectangle,
+      {rectangle || mesh_file,
        "Geometry",
        {"Center", "Radius"},
-       "<Geometry/Type> is 'rectangle' (it is for the discs)"},
+       "<Geometry/Type> is " + quoted(to_string(geometry.type)) +
+         " (it is for the discs)"},
+      {!mesh_file,
+       "Geometry",
+       {"Mesh file", "Manifolds"},
+       "<Geometry/Type> is " + quoted(to_string(geometry.type)) +
+         " (it is for 'mesh file')"},
       {!rectangle,
        "Geometry",
        {"Lower left corner", "Upper right corner", "Subdivisions"},

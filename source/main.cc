@@ -94,8 +94,8 @@ namespace
       << options()
       << "\n"
          "Exit status: 0 success, 1 solver failure, 2 wrong command line,\n"
-         "3 parameter file unreadable, 4 unknown entry, malformed line or entry\n"
-         "set twice, 5 invalid value (or an output folder that cannot be\n"
+         "3 parameter (or mesh) file unreadable, 4 unknown entry, malformed\n"
+         "line or entry set twice, 5 invalid value (or an output folder that cannot be\n"
          "made), 6 inconsistent scene (or a mesh too large for the machine's\n"
          "memory), 7 load the foundation cannot hold.\n";
     return text.str();

@@ -389,6 +389,8 @@ namespace dualcontact
   {
     bool                               is_scene;
     std::map<std::string, std::string> set_at; // "Sub/Entry" -> where
+    // "Sub/Entry" -> folder of the file that set it
+    std::map<std::string, std::filesystem::path> folder_of;
   };
 
   ParameterReader::ParameterReader(ParameterHandler &prm)
@@ -471,6 +473,7 @@ namespace dualcontact
            entry,
            Utilities::trim(assignment.substr(equals + 1)),
            "--set",
+           "",
            *overrides);
   }
 
@@ -499,6 +502,15 @@ namespace dualcontact
           given[name] = where;
       }
     return given;
+  }
+
+  std::filesystem::path
+  ParameterReader::folder_of(const std::string &entry) const
+  {
+    if (overrides->set_at.count(entry) > 0)
+      return "";
+    const auto it = scene->folder_of.find(entry);
+    return it == scene->folder_of.end() ? std::filesystem::path() : it->second;
   }
 
   bool
@@ -586,6 +598,7 @@ namespace dualcontact
                Utilities::trim(line.substr(4, equals - 4)),
                Utilities::trim(line.substr(equals + 1)),
                where,
+               folder,
                layer);
       }
     else if (starts_with_keyword(line, "include "))
@@ -664,6 +677,7 @@ namespace dualcontact
                           const std::string              &entry,
                           const std::string              &value,
                           const std::string              &where,
+                          const std::filesystem::path    &folder,
                           Layer                          &layer)
   {
     const std::string       name    = join(subsections, entry);
@@ -731,6 +745,7 @@ namespace dualcontact
                          ">: expected " + pattern_in_words(it->second.pattern) +
                          " (" + where + ").",
                        exit_invalid_value);
-    layer.set_at[name] = where;
+    layer.set_at[name]    = where;
+    layer.folder_of[name] = folder;
   }
 } // namespace dualcontact

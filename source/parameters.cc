@@ -7,7 +7,9 @@
 #include <dualcontact/parameter_reader.h>
 #include <dualcontact/parameters.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace dualcontact
@@ -98,6 +100,105 @@ namespace dualcontact
     }
 
     /**
+     * <Geometry/Manifolds>: "id: kind center x, y[, z] radius R [axis a, b,
+     * c]; ...". The counts of coordinates are checked against the dimension
+     * in check_consistency().
+     */
+    std::vector<BoundaryManifold>
+    parse_manifolds(const std::string &text)
+    {
+      const std::string entry = "<Geometry/Manifolds>";
+      const std::string form =
+        " (expected 'id: circle center x, y radius R', 'id: sphere center x, "
+        "y, z radius R' or 'id: cylinder center x, y, z axis a, b, c radius "
+        "R', separated by ';')";
+      std::vector<BoundaryManifold> result;
+      for (const std::string &item : Utilities::split_string_list(text, ';'))
+        {
+          if (item.empty())
+            continue;
+          const auto colon = item.find(':');
+          const auto bad   = [&](const std::string &what) {
+            return InputError("The entry " + entry + " has '" + item +
+                                "': " + what + form + ".",
+                              exit_invalid_value);
+          };
+          if (colon == std::string::npos)
+            throw bad("no 'id:' in front");
+          BoundaryManifold  manifold;
+          const std::string id_text = Utilities::trim(item.substr(0, colon));
+          if (id_text.empty() ||
+              id_text.find_first_not_of("0123456789") != std::string::npos ||
+              id_text.size() > 3 || std::stoi(id_text) > 255)
+            throw bad("'" + id_text + "' is not a boundary id (0 to 255)");
+          manifold.id = static_cast<boundary_id>(std::stoi(id_text));
+
+          std::string words = item.substr(colon + 1);
+          std::replace(words.begin(), words.end(), ',', ' ');
+          std::istringstream in(words);
+          std::string        kind;
+          in >> kind;
+          if (kind == "circle")
+            manifold.kind = BoundaryManifold::Kind::circle;
+          else if (kind == "sphere")
+            manifold.kind = BoundaryManifold::Kind::sphere;
+          else if (kind == "cylinder")
+            manifold.kind = BoundaryManifold::Kind::cylinder;
+          else
+            throw bad("'" + kind +
+                      "' is not a kind of manifold (circle, sphere, cylinder)");
+
+          // keyword, then its numbers up to the next keyword
+          std::map<std::string, std::vector<double>> values;
+          std::string                                word, key;
+          while (in >> word)
+            {
+              if (word == "center" || word == "radius" || word == "axis")
+                {
+                  key = word;
+                  if (!values.emplace(key, std::vector<double>()).second)
+                    throw bad("'" + key + "' is given twice");
+                  continue;
+                }
+              std::size_t used  = 0;
+              double      value = 0.;
+              try
+                {
+                  value = std::stod(word, &used);
+                }
+              catch (const std::exception &)
+                {
+                  used = 0;
+                }
+              if (key.empty() || used != word.size() || !std::isfinite(value))
+                throw bad("'" + word +
+                          "' is neither a number nor one of "
+                          "center, radius, axis");
+              values[key].push_back(value);
+            }
+          if (values.count("center") == 0 || values.count("radius") == 0)
+            throw bad("a manifold needs its center and its radius");
+          manifold.center = values["center"];
+          if (values["radius"].size() != 1 || !(values["radius"][0] > 0.))
+            throw bad("the radius must be one positive number");
+          manifold.radius = values["radius"][0];
+          if (manifold.kind == BoundaryManifold::Kind::cylinder)
+            {
+              if (values.count("axis") == 0)
+                throw bad("a cylinder needs its axis");
+              manifold.axis = values["axis"];
+            }
+          else if (values.count("axis") > 0)
+            throw bad("only a cylinder has an axis");
+          for (const BoundaryManifold &earlier : result)
+            if (earlier.id == manifold.id)
+              throw bad("boundary id " + id_text + " is given twice");
+          result.push_back(manifold);
+        }
+      return result;
+    }
+
+    /**
      * The friction law takes its parameter from one entry (<Friction/
      * Coefficient> or <Friction/Threshold>). Giving only the other one is
      * a mix-up of the two laws: the run would be frictionless, which is
@@ -161,6 +262,23 @@ namespace dualcontact
           return "half disc";
         case GeometryType::quarter_disc:
           return "quarter disc";
+        case GeometryType::mesh_file:
+          return "mesh file";
+      }
+    return "";
+  }
+
+  std::string
+  BoundaryManifold::kind_name() const
+  {
+    switch (kind)
+      {
+        case Kind::circle:
+          return "circle";
+        case Kind::sphere:
+          return "sphere";
+        case Kind::cylinder:
+          return "cylinder";
       }
     return "";
   }
@@ -214,14 +332,45 @@ namespace dualcontact
     prm.declare_entry(
       "Type",
       "rectangle",
-      Patterns::Selection("rectangle|half disc|quarter disc"),
+      Patterns::Selection("rectangle|half disc|quarter disc|mesh file"),
       "Shape of the body. 'rectangle': an axis-parallel box with boundary ids "
       "0 (x = x_min), 1 (x = x_max), 2 (y = y_min), 3 (y = y_max) (and 4, 5 "
       "for z in 3D). 'half disc': the lower half of a disc (ball in 3D) of "
       "the given radius and centre, with boundary ids 0 (the curved part) "
       "and 1 (the flat top); refinement follows the circle. 'quarter disc' "
       "(2D): the lower right quarter (x >= x_c, y <= y_c) with ids 0 (curved), "
-      "1 (flat top) and 2 (the symmetry line x = x_c).");
+      "1 (flat top) and 2 (the symmetry line x = x_c). 'mesh file': the "
+      "coarse mesh of <Geometry/Mesh file> (Gmsh, quadrilaterals in 2D, "
+      "hexahedra in 3D), whose physical groups are the boundary ids; "
+      "<Geometry/Manifolds> makes curved parts stay curved under refinement "
+      "(doc/meshes.md).");
+    prm.declare_entry(
+      "Mesh file",
+      "",
+      Patterns::FileName(Patterns::FileName::input),
+      "Type 'mesh file': the Gmsh mesh (.msh, ASCII, format 2.2 or 4.1), a "
+      "path relative to the folder of the .prm file that sets it (given by "
+      "--set: relative to the working directory). It must hold only "
+      "quadrilaterals (2D) or hexahedra (3D), the coarse mesh that the "
+      "refinement starts from. Physical groups of curves (2D) or surfaces "
+      "(3D) become boundary ids, the numbers of <Boundary conditions/"
+      "Conditions>; every boundary face must be in one (Gmsh's 'Physical "
+      "Curve(0) = {...};' gives id 0). Coordinates are in [length].");
+    prm.declare_entry(
+      "Manifolds",
+      "",
+      Patterns::Anything(),
+      "Type 'mesh file': the curved parts of the boundary, so that refinement "
+      "puts new vertices on the curve instead of on the straight line "
+      "between old ones. A list separated by ';' of 'id: circle center x, y "
+      "radius R' (2D), 'id: sphere center x, y, z radius R' or 'id: cylinder "
+      "center x, y, z axis a, b, c radius R' (3D: the cylinder's axis passes "
+      "through the center in direction (a, b, c)), e.g. '0: circle center 0, "
+      "0 radius 1'. Center and radius in [length]. Every vertex of a "
+      "boundary face with that id must lie on the curve (within 1e-5 R). The "
+      "interior then follows a transfinite interpolation of the boundary, "
+      "so that refined cells stay well shaped. Empty: every face stays "
+      "straight.");
     prm.declare_entry("Lower left corner",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
@@ -278,7 +427,8 @@ namespace dualcontact
     const std::string shape = prm.get("Type");
     type                    = shape == "rectangle" ? GeometryType::rectangle :
                               shape == "half disc" ? GeometryType::half_disc :
-                                                     GeometryType::quarter_disc;
+                              shape == "quarter disc" ? GeometryType::quarter_disc :
+                                                        GeometryType::mesh_file;
     lower_left              = parse_doubles(prm.get("Lower left corner"));
     upper_right             = parse_doubles(prm.get("Upper right corner"));
     subdivisions.clear();
@@ -290,10 +440,15 @@ namespace dualcontact
     pre_refinement_steps    = prm.get_integer("Pre-refinement steps");
     pre_refinement_distance = prm.get_double("Pre-refinement distance");
     pre_refinement_grading  = prm.get_double("Pre-refinement grading");
+    mesh_file               = prm.get("Mesh file");
+    mesh_file_given         = mesh_file;
+    manifolds               = parse_manifolds(prm.get("Manifolds"));
     prm.leave_subsection();
     // the patterns allow 0 (Patterns::Double has closed bounds), which
     // would fail late, inside deal.II's mesh or manifold code
-    if (type != GeometryType::rectangle && !(radius > 0.))
+    if ((type == GeometryType::half_disc ||
+         type == GeometryType::quarter_disc) &&
+        !(radius > 0.))
       throw InputError("The entry <Geometry/Radius> must be positive: a " +
                          to_string(type) + " of radius " + number_text(radius) +
                          " has no area.",
@@ -1051,10 +1206,26 @@ namespace dualcontact
   Parameters::use(ParameterHandler &prm, const ParameterReader &reader)
   {
     given = reader.given_entries();
+    // <Geometry/Mesh file> is relative to the folder of the file that set
+    // it (an override: the working directory). The listing (parameters.prm
+    // in the output folder) gets the absolute path, so that it repeats the
+    // run from wherever it is.
+    prm.enter_subsection("Geometry");
+    const std::string mesh_file_given = prm.get("Mesh file");
+    if (!mesh_file_given.empty())
+      {
+        std::filesystem::path file(mesh_file_given);
+        if (file.is_relative())
+          file = reader.folder_of("Geometry/Mesh file") / file;
+        prm.set("Mesh file",
+                std::filesystem::absolute(file).lexically_normal().string());
+      }
+    prm.leave_subsection();
     std::ostringstream out;
     prm.print_parameters(out, ParameterHandler::PRM);
     parameter_file = out.str();
     parse_parameters(prm);
+    geometry.mesh_file_given = mesh_file_given;
   }
 
   void
@@ -1096,8 +1267,42 @@ namespace dualcontact
                              "every coordinate.",
                              exit_inconsistent);
       }
-    else
+    else if (geometry.type != GeometryType::mesh_file)
       need_dim(geometry.center, "Geometry/Center");
+
+    if (geometry.type == GeometryType::mesh_file &&
+        geometry.mesh_file.find_first_not_of(" \t") == std::string::npos)
+      throw InputError("The entry <Geometry/Type> is 'mesh file' but "
+                       "<Geometry/Mesh file> names no file.",
+                       exit_inconsistent);
+    for (const BoundaryManifold &manifold : geometry.manifolds)
+      {
+        const std::string kind = manifold.kind_name();
+        const std::string what = "The entry <Geometry/Manifolds> gives "
+                                 "boundary id " +
+                                 std::to_string(manifold.id) + " a " + kind;
+        if ((manifold.kind == BoundaryManifold::Kind::circle) != (dim == 2))
+          throw InputError(what + ", which is for " +
+                             (dim == 2 ? "3D; in 2D use 'circle'." :
+                                         "2D; in 3D use 'sphere' or "
+                                         "'cylinder'."),
+                           exit_inconsistent);
+        if (manifold.center.size() != dim)
+          throw InputError(what + " whose center has " +
+                             std::to_string(manifold.center.size()) +
+                             " coordinates, not " + std::to_string(dim) + ".",
+                           exit_inconsistent);
+        if (manifold.kind == BoundaryManifold::Kind::cylinder)
+          {
+            double norm = 0;
+            for (const double c : manifold.axis)
+              norm += c * c;
+            if (manifold.axis.size() != dim || !(std::sqrt(norm) > 0.))
+              throw InputError(what + " whose axis is not a nonzero vector "
+                                      "of 3 components.",
+                               exit_inconsistent);
+          }
+      }
 
     if (geometry.type == GeometryType::quarter_disc && dim != 2)
       throw InputError("The entry <Geometry/Type> 'quarter disc' exists in 2D "
@@ -1108,8 +1313,9 @@ namespace dualcontact
                                geometry.type == GeometryType::quarter_disc ? 3 :
                                                                              2;
     const std::string  shape = to_string(geometry.type);
+    // a mesh file's ids are checked once it is read (Scene)
     for (const auto &[id, condition] : boundary.conditions)
-      if (id >= n_ids)
+      if (geometry.type != GeometryType::mesh_file && id >= n_ids)
         throw InputError("The entry <Boundary conditions/Conditions> names "
                          "boundary id " +
                            std::to_string(id) + ", which the geometry '" +

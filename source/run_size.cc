@@ -113,6 +113,8 @@ namespace dualcontact
             n += (n.empty() ? "" : ", ") + std::to_string(s);
           entries.push_back(setting("Geometry/Subdivisions", n));
         }
+      if (g.type == GeometryType::mesh_file)
+        entries.push_back(setting("Geometry/Mesh file", g.mesh_file_given));
       if (r.initial_global_refinement > 0)
         entries.push_back(setting("Refinement/Initial global refinement",
                                   std::to_string(r.initial_global_refinement)));

@@ -15,6 +15,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <dualcontact/input_error.h>
+#include <dualcontact/mesh_file.h>
 #include <dualcontact/scene.h>
 
 #include <cmath>
@@ -184,6 +185,18 @@ namespace dualcontact
     AssertThrow(parameters.geometry.dimension == dim,
                 ExcMessage("Scene<dim> built for the wrong dimension."));
 
+    // The coarse mesh of a mesh file is read first, on every rank (it is
+    // small): its size is the scene's length, and its boundary ids are
+    // what the conditions must name.
+    if (parameters.geometry.type == GeometryType::mesh_file)
+      {
+        read_mesh_file(parameters.geometry, coarse_mesh);
+        check_mesh_against_parameters(parameters, coarse_mesh);
+        const auto box   = GridTools::compute_bounding_box(coarse_mesh);
+        mesh_lower_left  = box.get_boundary_points().first;
+        mesh_upper_right = box.get_boundary_points().second;
+      }
+
     const MaterialParameters &material = parameters.material;
     const BoundaryParameters &boundary = parameters.boundary;
     const double              length   = characteristic_length();
@@ -299,9 +312,15 @@ namespace dualcontact
   Scene<dim>::characteristic_length() const
   {
     const GeometryParameters &g = parameters.geometry;
+    double                    length = 0;
+    if (g.type == GeometryType::mesh_file)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          length = std::max(length, mesh_upper_right[d] - mesh_lower_left[d]);
+        return length;
+      }
     if (g.type != GeometryType::rectangle)
       return g.radius;
-    double length = 0;
     for (unsigned int d = 0; d < dim; ++d)
       length = std::max(length, g.upper_right[d] - g.lower_left[d]);
     return length;
@@ -312,6 +331,8 @@ namespace dualcontact
   Scene<dim>::center() const
   {
     const GeometryParameters &g = parameters.geometry;
+    if (g.type == GeometryType::mesh_file)
+      return 0.5 * (mesh_lower_left + mesh_upper_right);
     if (g.type != GeometryType::rectangle)
       return to_point<dim>(g.center);
     return 0.5 * (to_point<dim>(g.lower_left) + to_point<dim>(g.upper_right));
@@ -333,6 +354,13 @@ namespace dualcontact
                                                   to_point<dim>(g.lower_left),
                                                   to_point<dim>(g.upper_right),
                                                   /*colorize=*/true);
+      }
+    else if (g.type == GeometryType::mesh_file)
+      {
+        // the file's mesh, read in the constructor; refinement follows the
+        // manifolds of <Geometry/Manifolds>
+        triangulation.copy_triangulation(coarse_mesh);
+        attach_manifolds(g, triangulation);
       }
     else
       {

@@ -67,6 +67,14 @@ namespace dualcontact
     std::map<std::string, std::string>
     given_entries() const;
 
+    /**
+     * The folder of the file that set `entry` ("Subsection/Entry"), for
+     * paths relative to it: empty (the working directory) for an override,
+     * a text, or an entry not given.
+     */
+    std::filesystem::path
+    folder_of(const std::string &entry) const;
+
     /** Whether the scene (not counting overrides) set at least one entry. */
     bool
     scene_has_entries() const;
@@ -97,6 +105,7 @@ namespace dualcontact
            const std::string              &entry,
            const std::string              &value,
            const std::string              &where,
+           const std::filesystem::path    &folder,
            Layer                          &layer);
 
     dealii::ParameterHandler &prm;

@@ -22,7 +22,8 @@ namespace dualcontact
   {
     rectangle,
     half_disc,
-    quarter_disc
+    quarter_disc,
+    mesh_file // a Gmsh .msh file (doc/meshes.md)
   };
 
   /** The condition on one part of the boundary (doc/theory.md §1). */
@@ -63,6 +64,30 @@ namespace dualcontact
   std::string
   to_string(const RefinementStrategy strategy);
 
+  /**
+   * A curved boundary part of a mesh read from a file: the boundary faces
+   * with this id lie on a circle (2D), a sphere or a cylinder (3D), which
+   * refinement follows (<Geometry/Manifolds>).
+   */
+  struct BoundaryManifold
+  {
+    enum class Kind
+    {
+      circle,  // 2D: |x - center| = radius
+      sphere,  // 3D: |x - center| = radius
+      cylinder // 3D: distance from the axis through center = radius
+    };
+    boundary_id         id   = 0;
+    Kind                kind = Kind::circle;
+    std::vector<double> center;
+    double              radius = 0.;
+    std::vector<double> axis; // cylinder only
+
+    /** "circle", "sphere", "cylinder". */
+    std::string
+    kind_name() const;
+  };
+
   /** Geometry and initial mesh. */
   struct GeometryParameters
   {
@@ -76,6 +101,12 @@ namespace dualcontact
     unsigned int              pre_refinement_steps    = 0;
     double                    pre_refinement_distance = 0.;
     double                    pre_refinement_grading  = 1.;
+    // Type 'mesh file': the file as the input gave it, and the path it was
+    // resolved to (relative to the folder of the .prm file that set it;
+    // Parameters::read_file resolves it)
+    std::string                   mesh_file_given;
+    std::string                   mesh_file;
+    std::vector<BoundaryManifold> manifolds;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -10,6 +10,8 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <dualcontact/friction_law.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameters.h>
@@ -67,8 +69,10 @@ namespace dualcontact
   {
   public:
     /**
-     * Build every function the scene needs from the parameters. Throws
-     * InputError naming the entry if an expression does not parse.
+     * Build every function the scene needs from the parameters, and read
+     * the coarse mesh of a mesh file (its size sets the lengths below).
+     * Throws InputError naming the entry if an expression does not parse,
+     * or the mesh file is bad or does not fit the entries (mesh_file.h).
      */
     explicit Scene(const Parameters &parameters);
 
@@ -159,18 +163,25 @@ namespace dualcontact
     }
 
     /** A point in the middle of the body (the rectangle's centre, the
-     * disc's centre): rotations are taken about it. */
+     * disc's centre, the centre of a mesh file's bounding box): rotations
+     * are taken about it. */
     Point<dim>
     center() const;
 
     /** A length that characterises the body (for relative measures): the
-     * rectangle's longest side, the disc's radius. */
+     * rectangle's longest side, the disc's radius, the longest side of a
+     * mesh file's bounding box. */
     double
     characteristic_length() const;
 
     const Parameters &parameters;
 
   private:
+    // the coarse mesh of a mesh file (empty for the built-in shapes), and
+    // its bounding box
+    Triangulation<dim> coarse_mesh;
+    Point<dim>         mesh_lower_left, mesh_upper_right;
+
     Effects                                                      effects_;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> displacements;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> tractions;

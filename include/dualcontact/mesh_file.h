@@ -1,0 +1,61 @@
+// Coarse meshes from Gmsh files (<Geometry/Type> = mesh file): reading and
+// checking the file, its boundary ids, and the manifolds that keep curved
+// boundaries curved under refinement (doc/meshes.md).
+#ifndef dualcontact_mesh_file_h
+#define dualcontact_mesh_file_h
+
+#include <deal.II/base/types.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <dualcontact/parameters.h>
+
+#include <set>
+#include <string>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * Read <Geometry/Mesh file> into `mesh` (a serial triangulation, the
+   * coarse mesh). The file is checked before deal.II's GridIn sees it, so
+   * that every problem is one InputError naming the entry: a missing or
+   * unreadable file, one that is not a Gmsh ASCII mesh of format 2 or 4
+   * (exit 3); triangles or tetrahedra, with how to recombine them in Gmsh,
+   * second-order elements, or no cells at all (exit 5); a mesh of the other
+   * dimension, or boundary faces in no physical group (exit 6).
+   */
+  template <int dim>
+  void
+  read_mesh_file(const GeometryParameters &geometry, Triangulation<dim> &mesh);
+
+  /** The boundary ids the faces of `mesh` carry. */
+  template <int dim>
+  std::set<types::boundary_id>
+  boundary_ids(const Triangulation<dim> &mesh);
+
+  /**
+   * Throw InputError (exit 6) if a boundary id of <Boundary conditions/
+   * Conditions> or <Geometry/Manifolds> is not in `ids` (the mesh's), or
+   * if a vertex of a face on which <Geometry/Manifolds> puts a manifold is
+   * off that circle, sphere or cylinder by more than 1e-5 R.
+   */
+  template <int dim>
+  void
+  check_mesh_against_parameters(const Parameters         &parameters,
+                                const Triangulation<dim> &mesh);
+
+  /**
+   * Give the faces of each id of <Geometry/Manifolds> (and their edges) its
+   * circle, sphere or cylinder, and every cell a transfinite interpolation
+   * of its boundary (as the built-in half disc does); nothing if there are
+   * no manifolds. Call on the coarse mesh, before any refinement.
+   */
+  template <int dim>
+  void
+  attach_manifolds(const GeometryParameters &geometry,
+                   Triangulation<dim>       &triangulation);
+} // namespace dualcontact
+
+#endif

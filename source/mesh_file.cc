@@ -1,0 +1,512 @@
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_iterator.h>
+
+#include <dualcontact/input_error.h>
+#include <dualcontact/mesh_file.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace dualcontact
+{
+  namespace
+  {
+    /** What the elements of a Gmsh file are, counted by Gmsh's type number. */
+    struct MshContents
+    {
+      double                       version = 0.;
+      std::map<int, unsigned long> n_elements; // type -> count
+      static constexpr int line = 1, triangle = 2, quad = 3, tetrahedron = 4,
+                           hexahedron = 5, prism = 6, pyramid = 7, point = 15;
+      unsigned long
+      count(const int type) const
+      {
+        const auto it = n_elements.find(type);
+        return it == n_elements.end() ? 0 : it->second;
+      }
+    };
+
+    /** "<Geometry/Mesh file> 'given' (the file path)" for messages. */
+    std::string
+    name_of(const GeometryParameters &geometry)
+    {
+      const std::string given = geometry.mesh_file_given.empty() ?
+                                  geometry.mesh_file :
+                                  geometry.mesh_file_given;
+      return "<Geometry/Mesh file> '" + given + "'" +
+             (given == geometry.mesh_file ? "" :
+                                            " (" + geometry.mesh_file + ")");
+    }
+
+    std::string
+    plural(const unsigned long n, const std::string &noun)
+    {
+      return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+    }
+
+    /**
+     * Scan the sections of a Gmsh ASCII file (format 2 or 4): its version
+     * and the count of each element type. deal.II's reader checks the
+     * format only with debug-mode assertions, and builds a simplex mesh
+     * from triangles, which p4est cannot take: both are found here first.
+     */
+    MshContents
+    scan_msh(std::istream &in, const GeometryParameters &geometry)
+    {
+      const std::string file       = name_of(geometry);
+      const auto        not_a_mesh = [&](const std::string &why) {
+        return InputError("The file " + file +
+                            " is not a Gmsh mesh that can "
+                                   "be read: " +
+                            why + ".",
+                          exit_cannot_read_file);
+      };
+      MshContents contents;
+      std::string word;
+      if (!(in >> word) || word != "$MeshFormat")
+        throw not_a_mesh("it does not begin with $MeshFormat (write it with "
+                         "Gmsh: 'gmsh -2 mesh.geo' or 'gmsh -3 mesh.geo')");
+      int file_type = -1, data_size = 0;
+      if (!(in >> contents.version >> file_type >> data_size))
+        throw not_a_mesh("its $MeshFormat line is not 'version 0 8'");
+      const bool format_2 = contents.version >= 2. && contents.version < 2.25;
+      const bool format_4 = contents.version >= 4. && contents.version < 4.15;
+      if (!format_2 && !format_4)
+        throw not_a_mesh("its format " +
+                         std::to_string(contents.version).substr(0, 3) +
+                         " is neither 2.2 nor 4.1 (Gmsh: "
+                         "'gmsh -format msh41' or 'Mesh.MshFileVersion = "
+                         "4.1;')");
+      if (file_type != 0)
+        throw not_a_mesh("it is binary; write it as ASCII ('Mesh.Binary = "
+                         "0;', or 'gmsh' without '-bin')");
+
+      bool        has_nodes = false, has_elements = false;
+      std::string line;
+      while (in >> word)
+        {
+          if (word == "$Nodes")
+            has_nodes = true;
+          if (word != "$Elements")
+            continue;
+          has_elements = true;
+          std::getline(in, line); // rest of the $Elements line
+          std::getline(in, line);
+          std::istringstream header(line);
+          unsigned long      n_blocks = 0, n_total = 0;
+          if (format_2)
+            {
+              header >> n_total;
+              n_blocks = 1;
+            }
+          else
+            header >> n_blocks >> n_total;
+          if (!header)
+            throw not_a_mesh("its $Elements section has no element count");
+          unsigned long n_read = 0;
+          for (unsigned long block = 0; block < n_blocks; ++block)
+            {
+              int           type = 0;
+              unsigned long n    = n_total;
+              if (format_4)
+                {
+                  int entity_dim = 0, entity_tag = 0;
+                  std::getline(in, line);
+                  std::istringstream block_header(line);
+                  if (!(block_header >> entity_dim >> entity_tag >> type >> n))
+                    throw not_a_mesh("an element block of $Elements is "
+                                     "malformed");
+                  contents.n_elements[type] += n;
+                }
+              for (unsigned long i = 0; i < n; ++i)
+                {
+                  if (!std::getline(in, line))
+                    throw not_a_mesh("it ends inside $Elements");
+                  if (format_2)
+                    {
+                      std::istringstream element(line);
+                      unsigned long      number = 0;
+                      if (!(element >> number >> type))
+                        throw not_a_mesh("the element line '" + line +
+                                         "' is malformed");
+                      ++contents.n_elements[type];
+                    }
+                }
+              n_read += n;
+            }
+          if (n_read != n_total)
+            throw not_a_mesh("its $Elements section holds " +
+                             std::to_string(n_read) + " elements, not the " +
+                             std::to_string(n_total) + " it announces");
+          if (!(in >> word) || word != "$EndElements")
+            throw not_a_mesh("its $Elements section does not end with "
+                             "$EndElements where it should");
+        }
+      if (!has_nodes || !has_elements)
+        throw not_a_mesh("it has no $Nodes or no $Elements section");
+      return contents;
+    }
+
+    /**
+     * The element types a mesh of dimension `dim` may hold, and the
+     * advice for the others.
+     */
+    template <int dim>
+    void
+    check_elements(const MshContents &contents, const GeometryParameters &g)
+    {
+      const std::string file = name_of(g);
+      const auto        n    = [&contents](const int type) {
+        return contents.count(type);
+      };
+      for (const auto &[type, count] : contents.n_elements)
+        if (type != MshContents::point && type != MshContents::line &&
+            type != MshContents::triangle && type != MshContents::quad &&
+            type != MshContents::tetrahedron &&
+            type != MshContents::hexahedron && type != MshContents::prism &&
+            type != MshContents::pyramid)
+          throw InputError("The mesh " + file + " has " +
+                             plural(count, "element") + " of Gmsh type " +
+                             std::to_string(type) +
+                             " (second order, or another kind): dualcontact "
+                             "needs first-order quadrilaterals (2D) or "
+                             "hexahedra (3D); set 'Mesh.ElementOrder = 1;'.",
+                           exit_invalid_value);
+
+      const unsigned long n_3d_cells =
+        n(MshContents::tetrahedron) + n(MshContents::hexahedron) +
+        n(MshContents::prism) + n(MshContents::pyramid);
+      const unsigned long n_2d_cells =
+        n(MshContents::triangle) + n(MshContents::quad);
+      if (dim == 2 && n_3d_cells > 0)
+        throw InputError("The mesh " + file + " is a 3D mesh (it has " +
+                           plural(n_3d_cells, "volume element") +
+                           "), but <Geometry/Dimension> is 2.",
+                         exit_inconsistent);
+      if (dim == 3 && n_3d_cells == 0 && n_2d_cells > 0)
+        throw InputError("The mesh " + file + " is a 2D mesh (it has " +
+                           plural(n_2d_cells, "surface element") +
+                           " and no volume elements), but <Geometry/"
+                           "Dimension> is 3.",
+                         exit_inconsistent);
+
+      if (dim == 2 && n(MshContents::triangle) > 0)
+        throw InputError(
+          "The mesh " + file + " has " +
+            plural(n(MshContents::triangle), "triangle") +
+            ": dualcontact needs quadrilaterals only (p4est). Recombine them "
+            "in Gmsh: add 'Recombine Surface{:};' (or 'Mesh.RecombineAll = "
+            "1;') to the .geo file, with 'Mesh.Algorithm = 8;' for a mesh "
+            "of quadrilaterals only, or 'Mesh.SubdivisionAlgorithm = 1;' to "
+            "split every triangle into quadrilaterals (doc/meshes.md).",
+          exit_invalid_value);
+      std::string not_hex;
+      for (const auto &[type, name] : std::vector<std::pair<int, std::string>>{
+             {MshContents::tetrahedron, "tetrahedra"},
+             {MshContents::prism, "prisms"},
+             {MshContents::pyramid, "pyramids"},
+             {MshContents::triangle, "triangles"}})
+        if (n(type) > 0)
+          not_hex += (not_hex.empty() ? "" : ", ") + std::to_string(n(type)) +
+                     " " + name;
+      if (dim == 3 && !not_hex.empty())
+        throw InputError(
+          "The mesh " + file + " has " + not_hex +
+            ": dualcontact needs hexahedra only (p4est). In Gmsh, extrude a "
+            "recombined surface mesh ('Recombine Surface{:};', then 'Extrude "
+            "{...} { Surface{...}; Layers{n}; Recombine; }'), or add "
+            "'Mesh.SubdivisionAlgorithm = 2;' to split every tetrahedron "
+            "into hexahedra (doc/meshes.md).",
+          exit_invalid_value);
+      if ((dim == 2 ? n(MshContents::quad) : n(MshContents::hexahedron)) == 0)
+        throw InputError("The mesh " + file + " has no " +
+                           (dim == 2 ? "quadrilaterals" : "hexahedra") +
+                           ": Gmsh writes only the elements of physical "
+                           "groups; give the domain one ('Physical " +
+                           (dim == 2 ? "Surface" : "Volume") +
+                           "(1) = {...};') or set 'Mesh.SaveAll = 1;'.",
+                         exit_invalid_value);
+    }
+
+    /** A point as "(x, y)" for messages. */
+    template <int dim>
+    std::string
+    point_text(const Point<dim> &p)
+    {
+      std::ostringstream out;
+      out.precision(6);
+      out << "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        out << (d ? ", " : "") << p[d];
+      out << ")";
+      return out.str();
+    }
+
+    template <int dim>
+    Point<dim>
+    to_point(const std::vector<double> &values)
+    {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim && d < values.size(); ++d)
+        p[d] = values[d];
+      return p;
+    }
+
+    /** Distance of x from the manifold's circle, sphere or cylinder axis. */
+    template <int dim>
+    double
+    radial_distance(const BoundaryManifold &manifold, const Point<dim> &x)
+    {
+      Tensor<1, dim> r = x - to_point<dim>(manifold.center);
+      if (manifold.kind == BoundaryManifold::Kind::cylinder)
+        {
+          Tensor<1, dim> axis;
+          for (unsigned int d = 0; d < dim; ++d)
+            axis[d] = manifold.axis[d];
+          axis /= axis.norm();
+          r -= (r * axis) * axis;
+        }
+      return r.norm();
+    }
+
+    // the manifold id of the transfinite interpolation in the cells: above
+    // every boundary id (0..255 in the entries)
+    constexpr types::manifold_id interior_manifold_id = 1000;
+  } // namespace
+
+  template <int dim>
+  void
+  read_mesh_file(const GeometryParameters &geometry, Triangulation<dim> &mesh)
+  {
+    const std::string     file = name_of(geometry);
+    std::error_code       error;
+    std::filesystem::path path(geometry.mesh_file);
+    if (std::filesystem::is_directory(path, error))
+      throw InputError("The mesh file " + file + " is a directory.",
+                       exit_cannot_read_file);
+    std::ifstream in(path);
+    if (!in)
+      throw InputError("Cannot open the mesh file " + file +
+                         " (a relative path is taken from the folder of the "
+                         ".prm file that sets it).",
+                       exit_cannot_read_file);
+    std::stringstream text;
+    text << in.rdbuf();
+
+    const MshContents contents = scan_msh(text, geometry);
+    check_elements<dim>(contents, geometry);
+
+    text.clear();
+    text.seekg(0);
+    GridIn<dim> grid_in;
+    grid_in.attach_triangulation(mesh);
+    try
+      {
+        grid_in.read_msh(text);
+      }
+    catch (const std::exception &exception)
+      {
+        std::string what = exception.what();
+        // deal.II's message: the text after "Additional information:"
+        const auto info = what.find("Additional information:");
+        if (info != std::string::npos)
+          what = what.substr(info + 23);
+        const auto trace = what.find("Stacktrace:");
+        if (trace != std::string::npos)
+          what = what.substr(0, trace);
+        std::string        line;
+        std::istringstream lines(what);
+        std::string        message;
+        while (std::getline(lines, line))
+          if (!line.empty() &&
+              line.find_first_not_of(" \t-") != std::string::npos)
+            message += (message.empty() ? "" : " ") +
+                       line.substr(line.find_first_not_of(" \t"));
+        if (message.size() > 300)
+          message = message.substr(0, 300) + "...";
+        throw InputError("The mesh file " + file +
+                           " cannot be read by deal.II's GridIn: " + message,
+                         exit_cannot_read_file);
+      }
+
+    // A boundary face in no physical group gets deal.II's default id 0,
+    // which a condition meant for another part would then silently cover:
+    // every boundary face must come from an element of the file.
+    unsigned int n_boundary_faces = 0;
+    for (const auto &face : mesh.active_face_iterators())
+      if (face->at_boundary())
+        ++n_boundary_faces;
+    const unsigned long n_boundary_elements =
+      contents.count(dim == 2 ? MshContents::line : MshContents::quad);
+    if (n_boundary_elements < n_boundary_faces)
+      throw InputError("The mesh " + file + " has " +
+                         plural(n_boundary_faces - n_boundary_elements,
+                                "boundary face") +
+                         " in no physical group (of " +
+                         std::to_string(n_boundary_faces) +
+                         "): every part of the boundary needs a boundary "
+                         "id, e.g. 'Physical " +
+                         (dim == 2 ? "Curve" : "Surface") +
+                         "(0) = {...};' in the .geo file (doc/meshes.md).",
+                       exit_inconsistent);
+  }
+
+  template <int dim>
+  std::set<types::boundary_id>
+  boundary_ids(const Triangulation<dim> &mesh)
+  {
+    std::set<types::boundary_id> ids;
+    for (const auto &face : mesh.active_face_iterators())
+      if (face->at_boundary())
+        ids.insert(face->boundary_id());
+    return ids;
+  }
+
+  template <int dim>
+  void
+  check_mesh_against_parameters(const Parameters         &parameters,
+                                const Triangulation<dim> &mesh)
+  {
+    const GeometryParameters          &geometry = parameters.geometry;
+    const std::set<types::boundary_id> ids      = boundary_ids(mesh);
+    std::string                        id_list;
+    for (const types::boundary_id id : ids)
+      id_list += (id_list.empty() ? "" : ", ") + std::to_string(id);
+    const auto check = [&](const types::boundary_id id,
+                           const std::string       &entry) {
+      if (ids.count(id) == 0)
+        throw InputError("The entry <" + entry + "> names boundary id " +
+                           std::to_string(id) + ", which the mesh " +
+                           name_of(geometry) + " does not have (its ids are " +
+                           id_list + ").",
+                         exit_inconsistent);
+    };
+    for (const auto &[id, condition] : parameters.boundary.conditions)
+      check(id, "Boundary conditions/Conditions");
+    for (const BoundaryManifold &manifold : geometry.manifolds)
+      check(manifold.id, "Geometry/Manifolds");
+
+    for (const BoundaryManifold &manifold : geometry.manifolds)
+      {
+        const double tolerance = 1e-5 * manifold.radius;
+        for (const auto &face : mesh.active_face_iterators())
+          if (face->at_boundary() && face->boundary_id() == manifold.id)
+            for (const unsigned int v : face->vertex_indices())
+              {
+                const double distance =
+                  radial_distance(manifold, face->vertex(v));
+                if (std::abs(distance - manifold.radius) > tolerance)
+                  {
+                    std::ostringstream figures;
+                    figures.precision(6);
+                    figures
+                      << distance << " from the "
+                      << (manifold.kind == BoundaryManifold::Kind::cylinder ?
+                            "axis" :
+                            "center")
+                      << ", not the radius " << manifold.radius;
+                    throw InputError(
+                      "The entry <Geometry/Manifolds> puts boundary id " +
+                        std::to_string(manifold.id) + " on a " +
+                        manifold.kind_name() + " of center " +
+                        point_text(to_point<dim>(manifold.center)) +
+                        ", but the vertex " + point_text(face->vertex(v)) +
+                        " of a face with that id in the mesh " +
+                        name_of(geometry) + " is " + figures.str() +
+                        ": the center, radius" +
+                        (manifold.kind == BoundaryManifold::Kind::cylinder ?
+                           ", axis" :
+                           "") +
+                        " or id does not match the mesh (tolerance 1e-5 R).",
+                      exit_inconsistent);
+                  }
+              }
+      }
+  }
+
+  template <int dim>
+  void
+  attach_manifolds(const GeometryParameters &geometry,
+                   Triangulation<dim>       &triangulation)
+  {
+    if (geometry.manifolds.empty())
+      return;
+    // The cells next to a curved boundary part follow the transfinite
+    // interpolation of their boundary, so that their refined cells stay
+    // well shaped; the other cells, the faces they share with those, and
+    // the straight parts of the boundary stay flat (as in deal.II's
+    // step-65; flat cells also spare the transfinite map's costly
+    // pull-backs). The curved ids come last: an edge shared by a flat and a
+    // curved boundary face is curved.
+    std::set<types::boundary_id> curved;
+    for (const BoundaryManifold &manifold : geometry.manifolds)
+      curved.insert(manifold.id);
+    const auto next_to_curved = [&curved](const auto &cell) {
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && curved.count(face->boundary_id()) > 0)
+          return true;
+      return false;
+    };
+    triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (next_to_curved(cell))
+        cell->set_all_manifold_ids(interior_manifold_id);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (!next_to_curved(cell))
+        cell->set_all_manifold_ids(numbers::flat_manifold_id);
+    for (const auto &face : triangulation.active_face_iterators())
+      if (face->at_boundary())
+        face->set_all_manifold_ids(numbers::flat_manifold_id);
+    for (const BoundaryManifold &manifold : geometry.manifolds)
+      {
+        // by hand: set_all_manifold_ids_on_boundary() would also take
+        // the edges whose own boundary id is manifold.id, and every edge
+        // of a mesh read in 3D has the default boundary id 0
+        for (const auto &face : triangulation.active_face_iterators())
+          if (face->at_boundary() && face->boundary_id() == manifold.id)
+            face->set_all_manifold_ids(manifold.id);
+        const Point<dim> center = to_point<dim>(manifold.center);
+        if (manifold.kind == BoundaryManifold::Kind::cylinder)
+          {
+            Tensor<1, dim> axis;
+            for (unsigned int d = 0; d < dim; ++d)
+              axis[d] = manifold.axis[d];
+            // CylindricalManifold exists for dim = 3 only
+            if constexpr (dim == 3)
+              triangulation.set_manifold(manifold.id,
+                                         CylindricalManifold<dim>(axis,
+                                                                  center));
+          }
+        else
+          triangulation.set_manifold(manifold.id,
+                                     SphericalManifold<dim>(center));
+      }
+    TransfiniteInterpolationManifold<dim> interior;
+    interior.initialize(triangulation);
+    triangulation.set_manifold(interior_manifold_id, interior);
+  }
+
+  template void
+  read_mesh_file(const GeometryParameters &, Triangulation<2> &);
+  template void
+  read_mesh_file(const GeometryParameters &, Triangulation<3> &);
+  template std::set<types::boundary_id>
+  boundary_ids(const Triangulation<2> &);
+  template std::set<types::boundary_id>
+  boundary_ids(const Triangulation<3> &);
+  template void
+  check_mesh_against_parameters(const Parameters &, const Triangulation<2> &);
+  template void
+  check_mesh_against_parameters(const Parameters &, const Triangulation<3> &);
+  template void
+  attach_manifolds(const GeometryParameters &, Triangulation<2> &);
+  template void
+  attach_manifolds(const GeometryParameters &, Triangulation<3> &);
+} // namespace dualcontact

@@ -1,0 +1,8 @@
+// Bad input for tests/prm/bad/mesh_tetrahedra.prm: a unit cube meshed with
+// tetrahedra. gmsh -3 -format msh41 tetrahedra.geo
+SetFactory("OpenCASCADE");
+Box(1) = {0, 0, 0, 1, 1, 1};
+Mesh.MeshSizeMin = 1;
+Mesh.MeshSizeMax = 1;
+Physical Surface(0) = {1:6};
+Physical Volume(1) = {1};
