@@ -340,7 +340,7 @@ TEST_CASE("A body held only by contact and pulled away: no equilibrium, "
   CHECK(error.thrown);
   CHECK(error.code == exit_no_equilibrium);
   CHECK(error.message.find("No equilibrium: the net load pulls the body "
-                           "away from the foundation") != std::string::npos);
+                           "away from the obstacle") != std::string::npos);
   MPI_Barrier(MPI_COMM_WORLD);
   CHECK(!std::filesystem::exists(directory));
   remove_directory(directory, MPI_COMM_WORLD);
