@@ -724,15 +724,19 @@ namespace dualcontact
 
     // a .pvd record over all cycles so that ParaView shows them as a
     // sequence
-    pvtu_records.emplace_back(
-      cycle,
-      data_out.write_vtu_with_pvtu_record(
-        directory + "/", "solution", cycle, mpi_communicator, 2));
-    if (root)
-      {
-        std::ofstream pvd(directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, pvtu_records);
-      }
+    const auto add_to_pvd =
+      [&](const std::string &name, const std::string &pvtu, auto &records) {
+        records.emplace_back(cycle, pvtu);
+        if (root)
+          {
+            std::ofstream pvd(directory + "/" + name + ".pvd");
+            DataOutBase::write_pvd_record(pvd, records);
+          }
+      };
+    add_to_pvd("solution",
+               data_out.write_vtu_with_pvtu_record(
+                 directory + "/", "solution", cycle, mpi_communicator, 2),
+               pvtu_records);
 
     // Gamma_C: the contact fields on its faces (contact_output.h)
     if (contact)
@@ -745,15 +749,10 @@ namespace dualcontact
                                solution,
                                hanging_node_constraints,
                                locally_relevant_dofs);
-        contact_pvtu_records.emplace_back(
-          cycle,
-          boundary.write_vtu_with_pvtu_record(
-            directory + "/", "contact", cycle, mpi_communicator, 2));
-        if (root)
-          {
-            std::ofstream pvd(directory + "/contact.pvd");
-            DataOutBase::write_pvd_record(pvd, contact_pvtu_records);
-          }
+        add_to_pvd("contact",
+                   boundary.write_vtu_with_pvtu_record(
+                     directory + "/", "contact", cycle, mpi_communicator, 2),
+                   contact_pvtu_records);
       }
   }
 

@@ -7,6 +7,7 @@
 
 #include <dualcontact/input_error.h>
 #include <dualcontact/mesh_file.h>
+#include <dualcontact/obstacle.h>
 
 #include <cmath>
 #include <filesystem>
@@ -247,16 +248,6 @@ namespace dualcontact
         out << (d ? ", " : "") << p[d];
       out << ")";
       return out.str();
-    }
-
-    template <int dim>
-    Point<dim>
-    to_point(const std::vector<double> &values)
-    {
-      Point<dim> p;
-      for (unsigned int d = 0; d < dim && d < values.size(); ++d)
-        p[d] = values[d];
-      return p;
     }
 
     /** Distance of x from the manifold's circle, sphere or cylinder axis. */

@@ -89,16 +89,6 @@ namespace dualcontact
 
   namespace
   {
-    template <int dim>
-    Point<dim>
-    to_point(const std::vector<double> &values)
-    {
-      Point<dim> p;
-      for (unsigned int d = 0; d < dim && d < values.size(); ++d)
-        p[d] = values[d];
-      return p;
-    }
-
     /**
      * The Gram matrix G_ij = int_{fixed} m_i.m_j + int_{normal fixed}
      * (m_i.n)(m_j.n) of displacement modes m_i(x) over the constrained part
@@ -311,7 +301,7 @@ namespace dualcontact
   double
   Scene<dim>::characteristic_length() const
   {
-    const GeometryParameters &g = parameters.geometry;
+    const GeometryParameters &g      = parameters.geometry;
     double                    length = 0;
     if (g.type == GeometryType::mesh_file)
       {

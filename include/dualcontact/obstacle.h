@@ -147,6 +147,21 @@ namespace dualcontact
   create_obstacle(const Parameters &parameters, const double length);
 
   /**
+   * The point (or vector) of a list of coordinates from a parameter entry;
+   * missing coordinates are 0, extra ones are ignored (entries of a
+   * subsection a scene does not use are not checked for their length).
+   */
+  template <int dim>
+  Point<dim>
+  to_point(const std::vector<double> &values)
+  {
+    Point<dim> p;
+    for (unsigned int d = 0; d < dim && d < values.size(); ++d)
+      p[d] = values[d];
+    return p;
+  }
+
+  /**
    * An orthonormal basis of the plane orthogonal to the unit vector n: 2D
    * t = (-n_2, n_1); 3D t_1 = e_x (or e_y where |n_x| >= 0.9) made
    * orthogonal to n, and t_2 = n x t_1. A function of n alone, so that the

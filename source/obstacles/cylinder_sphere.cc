@@ -19,12 +19,10 @@ namespace dualcontact
           : kind(parameters.type)
           , radius(parameters.radius)
       {
-        for (unsigned int d = 0; d < dim && d < parameters.center.size(); ++d)
-          center[d] = parameters.center[d];
+        center = to_point<dim>(parameters.center);
         if (cylinder && dim == 3)
           {
-            for (unsigned int d = 0; d < dim && d < parameters.axis.size(); ++d)
-              axis[d] = parameters.axis[d];
+            axis = to_point<dim>(parameters.axis);
             if (axis.norm() > 0)
               axis /= axis.norm();
           }

@@ -16,10 +16,8 @@ namespace dualcontact
       explicit Plane(const ObstacleParameters &parameters)
       {
         // without contact the entries are not checked: read what is there
-        for (unsigned int d = 0; d < dim && d < parameters.point.size(); ++d)
-          point[d] = parameters.point[d];
-        for (unsigned int d = 0; d < dim && d < parameters.normal.size(); ++d)
-          m[d] = parameters.normal[d];
+        point = to_point<dim>(parameters.point);
+        m     = to_point<dim>(parameters.normal);
         if (m.norm() > 0)
           m /= m.norm();
       }
