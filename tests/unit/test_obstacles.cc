@@ -162,8 +162,8 @@ TEST_CASE("A rigid flat punch given by its signed distance: the pressure "
   CHECK(worst < 0.02);
 }
 
-TEST_CASE("A rigid sphere pressed into a block (3D): Hertz's p0 within 2 % "
-          "on the finer mesh, a within one contact cell, the force exact",
+TEST_CASE("A rigid sphere pressed into a block (3D): Hertz's p0 within 1 % "
+          "on the finest mesh, a within one contact cell, the force exact",
           "[obstacle][hertz][3d]")
 {
   SceneRun<3>  run("indenter_sphere_3d.prm", "");
@@ -172,16 +172,20 @@ TEST_CASE("A rigid sphere pressed into a block (3D): Hertz's p0 within 2 % "
   const double p0 = 3. * P / (2. * numbers::PI * a * a);
   CHECK(obstacle_force(run)[2] == Approx(P / 4.).epsilon(1e-9));
   INFO("p0 " << run.last().zone.max_pressure << " (Hertz " << p0 << ")");
-  CHECK(std::abs(run.last().zone.max_pressure / p0 - 1.) < 0.02);
-  // the contact zone's radius: between the farthest node in contact and the
-  // nearest one out of it
+  CHECK(std::abs(run.last().zone.max_pressure / p0 - 1.) < 0.01);
+  CHECK(run.last().zone.pressure_error < 0.025); // L2 on Gamma_C: 1.8 %
+  // the contact zone's radius, along the symmetry lines y = 0 and x = 0
+  // (where the nodes lie on a line, one cell apart): between the farthest
+  // node in contact and the nearest one out of it
   const ContactSet<3> &c       = run.problem->contact();
   double               inside  = 0.;
   double               outside = std::numeric_limits<double>::max();
   for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
     {
       const Point<3> &x = c.nodes[s].position;
-      const double    r = std::hypot(x[0], x[1]);
+      if (std::min(std::abs(x[0]), std::abs(x[1])) > 1e-12)
+        continue;
+      const double r = std::hypot(x[0], x[1]);
       if (c.l1[s] > 0.)
         inside = std::max(inside, r);
       else
