@@ -296,40 +296,61 @@ TEST_CASE("contact_NN.csv has the exact pressure where the scene gives one",
            csv.text(r, "status") == "separated"));
 }
 
-TEST_CASE("contact_NN.csv is the same on all ranks and on one",
+namespace
+{
+  // The scene solved on all ranks and on each rank alone (one cycle): the
+  // same rows in the same order, in 2D along the boundary, in 3D along the
+  // first mean tangent and then the second.
+  template <int dim>
+  void
+  check_contact_csv_same_on_all_ranks(const std::string &scene)
+  {
+    const std::string one_cycle =
+      overlay("Refinement", "  set Number of cycles = 1\n");
+    const SceneRun<dim> world(scene, one_cycle);
+    const SceneRun<dim> alone(scene, one_cycle, MPI_COMM_SELF);
+    const Csv           a(file_of_rank_0(cycle_file(world.directory, 0)));
+    const Csv           b(read_text(cycle_file(alone.directory, 0)));
+    REQUIRE(a.header == b.header);
+    REQUIRE(Utilities::MPI::min(b.rows.size(), MPI_COMM_WORLD) ==
+            a.rows.size());
+    REQUIRE(Utilities::MPI::max(b.rows.size(), MPI_COMM_WORLD) ==
+            a.rows.size());
+    // the same nodes in the same order with the same status; the figures
+    // to the solver's tolerance, relative to the column's largest value
+    unsigned int n_different = 0;
+    double       difference  = 0.;
+    for (const std::string &column : a.header)
+      {
+        double largest = 0.;
+        for (std::size_t r = 0; r < a.rows.size(); ++r)
+          if (column != "status")
+            largest = std::max(largest, std::abs(a.number(r, column)));
+        for (std::size_t r = 0; r < a.rows.size(); ++r)
+          if (column == "status" || column == "s" || column == "x" ||
+              column == "y" || column == "z" || column == "weight")
+            n_different += a.text(r, column) != b.text(r, column);
+          else if (largest > 0.)
+            difference =
+              std::max(difference,
+                       std::abs(a.number(r, column) - b.number(r, column)) /
+                         largest);
+      }
+    CHECK(Utilities::MPI::max(n_different, MPI_COMM_WORLD) == 0);
+    CHECK(Utilities::MPI::max(difference, MPI_COMM_WORLD) < 1e-6);
+  }
+} // namespace
+
+TEST_CASE("contact_NN.csv is the same on all ranks and on one (2D)",
           "[output][contact][mpi]")
 {
-  const std::string one_cycle =
-    overlay("Refinement", "  set Number of cycles = 1\n");
-  const Run world("sliding_block.prm", one_cycle);
-  const Run alone("sliding_block.prm", one_cycle, MPI_COMM_SELF);
-  const Csv a(file_of_rank_0(cycle_file(world.directory, 0)));
-  const Csv b(read_text(cycle_file(alone.directory, 0)));
-  REQUIRE(a.header == b.header);
-  REQUIRE(Utilities::MPI::min(b.rows.size(), MPI_COMM_WORLD) == a.rows.size());
-  REQUIRE(Utilities::MPI::max(b.rows.size(), MPI_COMM_WORLD) == a.rows.size());
-  // the same nodes in the same order with the same status; the figures
-  // to the solver's tolerance, relative to the column's largest value
-  unsigned int n_different = 0;
-  double       difference  = 0.;
-  for (const std::string &column : a.header)
-    {
-      double largest = 0.;
-      for (std::size_t r = 0; r < a.rows.size(); ++r)
-        if (column != "status")
-          largest = std::max(largest, std::abs(a.number(r, column)));
-      for (std::size_t r = 0; r < a.rows.size(); ++r)
-        if (column == "status" || column == "s" || column == "x" ||
-            column == "y" || column == "weight")
-          n_different += a.text(r, column) != b.text(r, column);
-        else if (largest > 0.)
-          difference =
-            std::max(difference,
-                     std::abs(a.number(r, column) - b.number(r, column)) /
-                       largest);
-    }
-  CHECK(Utilities::MPI::max(n_different, MPI_COMM_WORLD) == 0);
-  CHECK(Utilities::MPI::max(difference, MPI_COMM_WORLD) < 1e-6);
+  check_contact_csv_same_on_all_ranks<2>("sliding_block.prm");
+}
+
+TEST_CASE("contact_NN.csv is the same on all ranks and on one (3D)",
+          "[output][contact][mpi][3d]")
+{
+  check_contact_csv_same_on_all_ranks<3>("indenter_sphere_3d.prm");
 }
 
 TEST_CASE("The contact fields are written on Gamma_C only, a .pvd lists "
