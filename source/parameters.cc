@@ -399,15 +399,16 @@ namespace dualcontact
       "Pre-refinement steps",
       "0",
       Patterns::Integer(0, 30),
-      "Number of times the cells near the foundation are refined before the "
-      "first cycle (after the initial global refinement) [-]. A cell counts as "
-      "near if one of its vertices lies within 'Pre-refinement distance' of "
-      "the foundation plane.");
+      "Number of times the cells near the obstacle (the foundation plane, or "
+      "the surface of subsection Obstacle) are refined before the first cycle "
+      "(after the initial global refinement) [-]. A cell counts as near if "
+      "one of its vertices lies within 'Pre-refinement distance' of the "
+      "obstacle in its prescribed position (after <Obstacle/Displacement>).");
     prm.declare_entry("Pre-refinement distance",
                       "0",
                       Patterns::Double(0.),
-                      "Distance from the foundation plane within which cells "
-                      "are pre-refined in the first step [length].");
+                      "Distance from the obstacle within which cells are "
+                      "pre-refined in the first step [length].");
     prm.declare_entry(
       "Pre-refinement grading",
       "1",
@@ -415,7 +416,7 @@ namespace dualcontact
       "Factor in (0, 1] by which the pre-refinement distance shrinks from one "
       "step to the next [-]: 1 refines the same band every step (a sharp "
       "jump in cell size at its edge), 0.5 gives a graded mesh whose cells "
-      "grow with the distance from the foundation.");
+      "grow with the distance from the obstacle.");
     prm.leave_subsection();
   }
 
