@@ -8,6 +8,7 @@
 #include <dualcontact/parameters.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -375,22 +376,26 @@ namespace dualcontact
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Rectangle: the corner with the smallest coordinates "
-                      "[length], one value per dimension.");
+                      "[length], one value per dimension (3D default: 0, 0, "
+                      "0).");
     prm.declare_entry("Upper right corner",
                       "1, 1",
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Rectangle: the corner with the largest coordinates "
-                      "[length], one value per dimension.");
+                      "[length], one value per dimension (3D default: 1, 1, "
+                      "1).");
     prm.declare_entry("Subdivisions",
                       "1, 1",
                       Patterns::List(Patterns::Integer(1), 2, 3),
                       "Rectangle: number of cells of the coarse mesh in each "
-                      "direction [-].");
+                      "direction [-] (3D default: 1, 1, 1).");
     prm.declare_entry("Center",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
-                      "Half disc: centre of the disc, i.e. the middle of the "
-                      "flat top [length].");
+                      "Half disc (3D: half ball): centre of the disc, i.e. "
+                      "the middle of the flat top; the curved part lies below "
+                      "it, toward -y (3D: -z) [length] (3D default: 0, 0, "
+                      "0).");
     prm.declare_entry("Radius",
                       "1",
                       Patterns::Double(0., Patterns::Double::max_double_value),
@@ -616,14 +621,15 @@ namespace dualcontact
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Plane obstacle (the foundation, a half-space): a point "
-                      "p on its boundary [length].");
+                      "p on its boundary [length] (3D default: 0, 0, 0).");
     prm.declare_entry(
       "Normal",
       "0, 1",
       Patterns::List(Patterns::Double(), 2, 3),
       "Plane obstacle: the normal m of its boundary, pointing from the "
       "foundation into the body [-]. Normalised on input; must not be zero. "
-      "The initial gap is g0(x) = (x - p).m.");
+      "The initial gap is g0(x) = (x - p).m. Default: +y in 2D, +z in 3D "
+      "(0, 0, 1).");
     prm.leave_subsection();
 
     prm.enter_subsection("Obstacle");
@@ -647,7 +653,7 @@ namespace dualcontact
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Cylinder, sphere: the centre c (for a 3D cylinder, a "
-                      "point on its axis) [length].");
+                      "point on its axis) [length] (3D default: 0, 0, 0).");
     prm.declare_entry("Radius",
                       "1",
                       Patterns::Double(0., Patterns::Double::max_double_value),
@@ -1203,6 +1209,40 @@ namespace dualcontact
     use(prm, reader);
   }
 
+  namespace
+  {
+    // The points and vectors whose declared defaults are 2D, with their 3D
+    // defaults: in a 3D scene an entry it does not give takes these, so
+    // that a 3D scene states only what differs (a foundation z = 0 with
+    // the normal +z, the unit cube, shapes about the origin). Set into the
+    // handler, so that the listing (parameters.prm) repeats the run.
+    void
+    apply_3d_defaults(ParameterHandler                         &prm,
+                      const std::map<std::string, std::string> &given)
+    {
+      prm.enter_subsection("Geometry");
+      const bool three = prm.get_integer("Dimension") == 3;
+      prm.leave_subsection();
+      if (!three)
+        return;
+      const std::vector<std::array<std::string, 3>> defaults = {
+        {"Geometry", "Lower left corner", "0, 0, 0"},
+        {"Geometry", "Upper right corner", "1, 1, 1"},
+        {"Geometry", "Subdivisions", "1, 1, 1"},
+        {"Geometry", "Center", "0, 0, 0"},
+        {"Foundation", "Point", "0, 0, 0"},
+        {"Foundation", "Normal", "0, 0, 1"},
+        {"Obstacle", "Center", "0, 0, 0"}};
+      for (const auto &[subsection, entry, value] : defaults)
+        if (given.count(subsection + "/" + entry) == 0)
+          {
+            prm.enter_subsection(subsection);
+            prm.set(entry, value);
+            prm.leave_subsection();
+          }
+    }
+  } // namespace
+
   void
   Parameters::use(ParameterHandler &prm, const ParameterReader &reader)
   {
@@ -1222,6 +1262,7 @@ namespace dualcontact
                 std::filesystem::absolute(file).lexically_normal().string());
       }
     prm.leave_subsection();
+    apply_3d_defaults(prm, given);
     std::ostringstream out;
     prm.print_parameters(out, ParameterHandler::PRM);
     parameter_file = out.str();

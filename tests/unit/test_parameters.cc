@@ -64,6 +64,46 @@ TEST_CASE("The default parameter file parses back and gives the defaults",
   CHECK(parameters.exact.displacement.empty());
 }
 
+TEST_CASE("A 3D scene states only what differs: the foundation z = 0 with "
+          "normal +z, the unit cube, shapes about the origin; the listing "
+          "repeats the run",
+          "[parameters][3d]")
+{
+  // the scene that was the bad input missing_foundation_3d before the 3D
+  // defaults: a cube standing on the foundation, pressed by its top
+  const std::string scene = "subsection Geometry\n"
+                            "  set Dimension = 3\n"
+                            "end\n"
+                            "subsection Boundary conditions\n"
+                            "  set Conditions = 0: normal fixed, 2: normal "
+                            "fixed, 4: contact, 5: traction\n"
+                            "  set Tractions  = 5: 0; 0; -1\n"
+                            "end\n";
+  Parameters        parameters;
+  REQUIRE_NOTHROW(parameters.read_string(scene));
+  CHECK(parameters.obstacle.point == std::vector<double>{0., 0., 0.});
+  CHECK(parameters.obstacle.normal == std::vector<double>{0., 0., 1.});
+  CHECK(parameters.geometry.lower_left == std::vector<double>{0., 0., 0.});
+  CHECK(parameters.geometry.upper_right == std::vector<double>{1., 1., 1.});
+  CHECK(parameters.geometry.subdivisions == std::vector<unsigned int>{1, 1, 1});
+  CHECK(parameters.geometry.center == std::vector<double>{0., 0., 0.});
+  CHECK(parameters.obstacle.center == std::vector<double>{0., 0., 0.});
+  // the listing holds the 3D values, and reads back to the same scene
+  CHECK(contains(parameters.parameter_file, "set Normal = 0, 0, 1"));
+  Parameters again;
+  REQUIRE_NOTHROW(again.read_string(parameters.parameter_file));
+  CHECK(again.obstacle.normal == parameters.obstacle.normal);
+  // what a scene gives is kept, in 2D the defaults stay 2D
+  Parameters given;
+  given.read_string(scene + "subsection Foundation\n  set Point = 0, 0, "
+                            "-1\nend\n");
+  CHECK(given.obstacle.point == std::vector<double>{0., 0., -1.});
+  CHECK(given.obstacle.normal == std::vector<double>{0., 0., 1.});
+  Parameters plane;
+  plane.read_string("subsection Geometry\n  set Type = rectangle\nend\n");
+  CHECK(plane.obstacle.normal == std::vector<double>{0., 1.});
+}
+
 TEST_CASE("An entry set twice is an error naming both lines; an overlay "
           "overrides the scene's value once",
           "[parameters][errors]")

@@ -97,7 +97,7 @@ namespace Step4
   // face of chord c on a circle of radius R spans the arc 2 R asin(c/2R).
   struct ArcLengths
   {
-    double       exact = 0.;
+    double       exact            = 0.;
     double       without_manifold = 0., with_manifold = 0.;
     unsigned int faces = 0;
   };
@@ -115,13 +115,12 @@ namespace Step4
 
     pcout << "The mesh "
           << std::filesystem::path(geometry.mesh_file).filename().string()
-          << ": "
-          << flat.n_active_cells() << " cells, " << flat.n_vertices()
+          << ": " << flat.n_active_cells() << " cells, " << flat.n_vertices()
           << " vertices; its boundary parts (physical curves):\n";
     for (const auto &[id, part] : boundary_parts(flat))
-      pcout << "  id " << static_cast<unsigned int>(id) << ": "
-            << std::setw(2) << part.first << " faces, length "
-            << format("%.5f", part.second) << "\n";
+      pcout << "  id " << static_cast<unsigned int>(id) << ": " << std::setw(2)
+            << part.first << " faces, length " << format("%.5f", part.second)
+            << "\n";
 
     // (a scene without a circle in <Geometry/Manifolds>: no arc to follow)
     if (geometry.manifolds.empty() ||
@@ -136,8 +135,8 @@ namespace Step4
                    std::asin(face->measure() / (2. * circle.radius));
 
     pcout << "\nThe length of id " << static_cast<unsigned int>(circle.id)
-          << " under global refinement (the arc: "
-          << format("%.5f", exact) << "):\n"
+          << " under global refinement (the arc: " << format("%.5f", exact)
+          << "):\n"
           << "refinements  faces  without manifold    error  with manifold"
              "      error\n";
     std::vector<ArcLengths> lengths;
@@ -188,11 +187,12 @@ namespace Step4
     double P, a, p0;
 
     Hertz(const Parameters &parameters, const double P)
-      : P(P)
+        : P(P)
     {
       const double nu     = parameters.material.poissons_ratio;
       const double E_star = parameters.material.youngs_modulus / (1 - nu * nu);
-      a  = std::sqrt(4. * P * parameters.obstacle.radius / (numbers::PI * E_star));
+      a =
+        std::sqrt(4. * P * parameters.obstacle.radius / (numbers::PI * E_star));
       p0 = 2. * P / (numbers::PI * a);
     }
 
@@ -334,13 +334,13 @@ namespace Step4
   };
 
   ProbeFigures
-  compare_probes(ConditionalOStream     &pcout,
-                 const Probes<2>        &probes,
-                 const unsigned int      cycle,
-                 const Hertz            &hertz,
-                 const double            nu,
-                 const std::string      &output_file,
-                 const bool              write)
+  compare_probes(ConditionalOStream &pcout,
+                 const Probes<2>    &probes,
+                 const unsigned int  cycle,
+                 const Hertz        &hertz,
+                 const double        nu,
+                 const std::string  &output_file,
+                 const bool          write)
   {
     ProbeFigures  f;
     std::ofstream out;
@@ -491,11 +491,9 @@ namespace Step4
       pcout << "  skipped: the arc (no circle in <Geometry/Manifolds>)\n";
     else
       check(pcout,
-            std::abs(arc.back().with_manifold / arc.back().exact - 1.) <
-                1e-4 &&
+            std::abs(arc.back().with_manifold / arc.back().exact - 1.) < 1e-4 &&
               std::abs(arc.back().without_manifold -
-                       arc.front().without_manifold) <
-                1e-12 * arc.back().exact,
+                       arc.front().without_manifold) < 1e-12 * arc.back().exact,
             "the arc: within 1e-4 of its length with the manifold, the "
             "coarse polygon without");
 
