@@ -495,6 +495,42 @@ namespace dualcontact
   }
 
   template <int dim>
+  Tensor<1, dim>
+  Scene<dim>::rigid_motion(const unsigned int i, const Point<dim> &x) const
+  {
+    Tensor<1, dim> m;
+    if (i < dim)
+      m[i] = 1;
+    else
+      {
+        const Tensor<1, dim> r = (x - center()) / characteristic_length();
+        const unsigned int   k = i - dim; // rotation in the plane (a, b)
+        const unsigned int   a = (dim == 2) ? 0 : (k == 2 ? 1 : 0);
+        const unsigned int   b = (dim == 2) ? 1 : (k == 0 ? 1 : 2);
+        m[a]                   = -r[b];
+        m[b]                   = r[a];
+      }
+    return m;
+  }
+
+  template <int dim>
+  FullMatrix<double>
+  Scene<dim>::rigid_motion_gram(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    double                                          &measure) const
+  {
+    return constrained_gram(
+      triangulation,
+      ids_with(BoundaryCondition::fixed),
+      ids_with(BoundaryCondition::normal_fixed),
+      n_rigid_motions,
+      [this](const unsigned int i, const Point<dim> &x) {
+        return rigid_motion(i, x);
+      },
+      measure);
+  }
+
+  template <int dim>
   void
   Scene<dim>::check_rigid_motions(
     const parallel::distributed::Triangulation<dim> &triangulation) const
@@ -502,36 +538,9 @@ namespace dualcontact
     if (effects_.contact)
       return; // semi-coercive is allowed: contact holds the body
 
-    // The rigid motions: dim translations and dim*(dim-1)/2 rotations about
-    // the body's centre, scaled by its size so that all have unit magnitude.
-    const unsigned int n_modes = dim * (dim + 1) / 2;
-    const double       length  = characteristic_length();
-    const Point<dim>   center  = this->center();
-
-    const auto mode = [&](const unsigned int i, const Point<dim> &x) {
-      Tensor<1, dim> m;
-      if (i < dim)
-        m[i] = 1;
-      else
-        {
-          const Tensor<1, dim> r = (x - center) / length;
-          const unsigned int   k = i - dim; // rotation in the plane (a, b)
-          const unsigned int   a = (dim == 2) ? 0 : (k == 2 ? 1 : 0);
-          const unsigned int   b = (dim == 2) ? 1 : (k == 0 ? 1 : 2);
-          m[a]                   = -r[b];
-          m[b]                   = r[a];
-        }
-      return m;
-    };
-
+    const unsigned int       n_modes = n_rigid_motions;
     double                   measure = 0;
-    const FullMatrix<double> gram =
-      constrained_gram(triangulation,
-                       ids_with(BoundaryCondition::fixed),
-                       ids_with(BoundaryCondition::normal_fixed),
-                       n_modes,
-                       mode,
-                       measure);
+    const FullMatrix<double> gram = rigid_motion_gram(triangulation, measure);
 
     unsigned int n_free = n_modes;
     if (measure > 0)

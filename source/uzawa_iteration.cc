@@ -114,6 +114,12 @@ namespace dualcontact
     record.change_g  = relative_change(std::sqrt(sums[4]), std::sqrt(sums[5]));
     TrilinosWrappers::MPI::Vector change(v);
     change -= v_previous;
+    // without the rigid motions that nothing holds: the problem does not
+    // determine v along them, and a change there is no change of the
+    // solution (doc/theory.md §6)
+    if (system.free_motions != nullptr)
+      for (const TrilinosWrappers::MPI::Vector &w : *system.free_motions)
+        change.add(-(w * change), w);
     const double v_norm_inf = v.linfty_norm();
     record.change_v         = relative_change(change.l2_norm(), v.l2_norm());
     record.violation        = relative_change(violation, v_norm_inf);

@@ -251,6 +251,10 @@ namespace dualcontact
     check_equilibrium() const;
     double
     net_load(const Tensor<1, dim> &direction) const;
+    /** The rigid motions that neither the prescribed displacements nor the
+     * contact hold, into free_motions (doc/theory.md §6). */
+    void
+    find_free_motions();
     const Vector<float> &
     refinement_indicator();
     void
@@ -299,11 +303,13 @@ namespace dualcontact
     double          chi = 0.;
     // the resultant of the applied loads (tractions, body force), from the
     // assembly
-    std::array<double, 3>   applied_load{};
-    double                  held_by_friction_pressure = 0.;
-    NewtonSolver<dim>       newton;
-    UzawaIteration<dim>     uzawa;
-    ThresholdIteration<dim> threshold_iteration;
+    std::array<double, 3> applied_load{};
+    double                held_by_friction_pressure = 0.;
+    // the rigid motions that nothing holds (ContactSystem::free_motions)
+    std::vector<TrilinosWrappers::MPI::Vector> free_motions;
+    NewtonSolver<dim>                          newton;
+    UzawaIteration<dim>                        uzawa;
+    ThresholdIteration<dim>                    threshold_iteration;
 
     // nested iteration: the transfer of v, the multipliers and the
     // threshold across a refinement, and what it carried to the new mesh

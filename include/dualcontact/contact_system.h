@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <string>
+#include <vector>
 
 namespace dualcontact
 {
@@ -33,6 +34,11 @@ namespace dualcontact
     double                                r;   // augmentation [stress/length]
     double                                chi; // proximal [stress/length^2]
     double chi_scale = 1.; // the step's proximal weight is chi_scale chi
+    // The rigid motions that nothing holds (neither the prescribed
+    // displacements nor the contact), orthonormal, condensed: the problem
+    // does not determine v along them, and the Uzawa iteration's d(v)
+    // leaves them out (doc/theory.md §6). Empty, or null, if there are none.
+    const std::vector<TrilinosWrappers::MPI::Vector> *free_motions = nullptr;
 
     /** The proximal weight of the step [stress/length^2]. */
     double

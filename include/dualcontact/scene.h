@@ -12,6 +12,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <deal.II/lac/full_matrix.h>
+
 #include <dualcontact/friction_law.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameters.h>
@@ -95,6 +97,29 @@ namespace dualcontact
     void
     check_rigid_motions(
       const parallel::distributed::Triangulation<dim> &triangulation) const;
+
+    /** dim translations, then dim(dim-1)/2 rotations. */
+    static constexpr unsigned int n_rigid_motions = dim * (dim + 1) / 2;
+
+    /**
+     * The rigid motion i at x: the unit translation along e_i for i < dim,
+     * then the rotations about center(), scaled by 1/characteristic_length()
+     * so that all have magnitudes of order one on the body.
+     */
+    Tensor<1, dim>
+    rigid_motion(const unsigned int i, const Point<dim> &x) const;
+
+    /**
+     * The Gram matrix G_ij = int_{fixed} m_i.m_j + int_{normal fixed}
+     * (m_i.n)(m_j.n) of the rigid motions m_i over the part of the boundary
+     * where displacements are prescribed, summed over the ranks; `measure`
+     * gets that part's length (area). A combination c of rigid motions is
+     * left free by the boundary conditions iff G c = 0. Collective.
+     */
+    FullMatrix<double>
+    rigid_motion_gram(
+      const parallel::distributed::Triangulation<dim> &triangulation,
+      double                                          &measure) const;
 
     /**
      * Whether the rigid translation along e is left free by the fixed and
