@@ -50,8 +50,7 @@ TEST_CASE("The free rigid motions: the 2D half disc slides along x, the 3D "
                                    "subsection Refinement\n  set Number of "
                                    "cycles = 1\n  set Initial global "
                                    "refinement = 1\nend\n")) == 3);
-  CHECK(n_free_motions(SceneRun<3>("indenter_sphere_3d.prm", one_cycle)) ==
-        0);
+  CHECK(n_free_motions(SceneRun<3>("indenter_sphere_3d.prm", one_cycle)) == 0);
 }
 
 TEST_CASE("The semi-coercive 3D half ball converges like the 2D one: at "
@@ -60,7 +59,7 @@ TEST_CASE("The semi-coercive 3D half ball converges like the 2D one: at "
           "[free motions][3d][hertz]")
 {
   // the shipped scene, two of its three cycles (9663 and 26421 DoFs)
-  SceneRun<3> run("hertz_3d.prm",
+  SceneRun<3>  run("hertz_3d.prm",
                   "subsection Refinement\n  set Number of cycles = 2\nend\n");
   const double E_star = 1000. / (1. - 0.3 * 0.3);
   for (const CycleResult &r : run.problem->results())
@@ -70,8 +69,7 @@ TEST_CASE("The semi-coercive 3D half ball converges like the 2D one: at "
                        "left out the free motions)");
       CHECK(r.solve.uzawa_steps <= 20);
       CHECK(r.solve.chi_scale == 1.);
-      CHECK(r.zone.contact_force ==
-            Approx(r.solve.normal_load).epsilon(1e-8));
+      CHECK(r.zone.contact_force == Approx(r.solve.normal_load).epsilon(1e-8));
     }
   // Hertz for the load on the discrete top: +0.90 % measured on the second
   // mesh (+0.10 % on the third, which the scene adds)

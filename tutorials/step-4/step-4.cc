@@ -417,6 +417,8 @@ namespace Step4
 
     std::ostringstream log;
     ContactProblem<2>  problem(parameters, comm, log);
+    // parameters.prm in the output folder: the entries this run used
+    problem.record_parameters(parameters.parameter_file);
     problem.run();
     const std::string &directory = parameters.output.directory;
     if (root)
