@@ -253,13 +253,17 @@ $elapsed s. Screen log: \`doc/benchmark_${tag}.log\`.${EXTRA_PRM:+ Extra entries
 Columns: contact nodes = nodes on the contact boundary, active = nodes in
 contact at the end; Uzawa / Newton / CG = steps of the Uzawa and Newton iterations and CG
 iterations, summed over the contact solve; AMG = AMG set-ups in the contact
-solve; memory = peak resident memory summed over ranks; contact = wall time of
+solve; memory = peak resident memory summed over ranks (KB per DoF: the
+same over the DoFs; it includes the program's fixed start-up cost, which
+dominates on small meshes); contact = wall time of
 the assembly and the contact solve; linear = wall time of the assembly and of
 one linear solve on the same mesh (AMG set-up + CG); ratio = contact / linear;
 start = nested (from the previous mesh's solution and multipliers,
 Refinement/Nested iteration) or cold; ratio, all meshes = the contact solves
 and transfers of this mesh and of all coarser ones, over the linear solve on
-this mesh; pressure error = relative L2 error of the contact pressure on
+this mesh; exponent = log(contact_k / contact_{k-1}) / log(N_k / N_{k-1}),
+the growth of the contact time with the DoFs N since the previous mesh
+(1 is linear cost); pressure error = relative L2 error of the contact pressure on
 Gamma_C against the scene's \`Exact solution/Contact pressure\`. The target
 is judged on "ratio".
 EOF
@@ -281,12 +285,19 @@ EOF
       # starts from the previous one, so their cost belongs to this one
       sequence += contact + $c["time_refine"]
       whole = (linear > 0) ? sequence / linear : -1
-      rows[++n] = sprintf("| %d | %s | %d | %d | %d | %d | %d | %d | %d | %.0f | %.3f | %.3f | %s | %s | %.2e |",
+      # memory per DoF, and the growth exponent of the contact time with
+      # the DoFs since the previous mesh (t ~ N^exponent)
+      kb = 1024 * $c["memory_mb"] / $c["dofs"]
+      exponent = (n > 0 && previous_contact > 0 && contact > 0 && $c["dofs"] > previous_dofs) ? \
+        sprintf("%.2f", log(contact / previous_contact) / log($c["dofs"] / previous_dofs)) : "-"
+      previous_contact = contact; previous_dofs = $c["dofs"]
+      rows[++n] = sprintf("| %d | %s | %d | %d | %d | %d | %d | %d | %d | %.0f | %.0f | %.3f | %.3f | %s | %s | %s | %s |",
         $c["dofs"], ($c["warm_start"] == 1) ? "nested" : "cold", $c["contact_nodes"], $c["active_nodes"], $c["threshold_steps"], $c["uzawa_steps"],
         $c["newton_steps"], $c["linear_iterations"], $c["amg_setups"],
-        $c["memory_mb"], contact, linear,
+        $c["memory_mb"], kb, contact, linear,
         (ratio >= 0) ? sprintf("%.2f", ratio) : "n/a",
-        (whole >= 0) ? sprintf("%.2f", whole) : "n/a", $c["pressure_error"])
+        (whole >= 0) ? sprintf("%.2f", whole) : "n/a", exponent,
+        ($c["pressure_error"] > 0) ? sprintf("%.2e", $c["pressure_error"]) : "-")
       if ($c["dofs"] >= 2.5e5) {
         ++big
         if (ratio < 0 || ratio > target) { ++miss; worst = worst sprintf(" %d DoFs: %s;", $c["dofs"], (ratio >= 0) ? sprintf("%.2f", ratio) : "not timed") }
@@ -294,8 +305,8 @@ EOF
       }
     }
     END {
-      print "| DoFs | start | contact nodes | active | threshold steps | Uzawa | Newton | CG | AMG set-ups | memory [MB] | contact [s] | linear [s] | ratio | ratio, all meshes | pressure error |"
-      print "|---:|:---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+      print "| DoFs | start | contact nodes | active | threshold steps | Uzawa | Newton | CG | AMG set-ups | memory [MB] | KB per DoF | contact [s] | linear [s] | ratio | ratio, all meshes | exponent | pressure error |"
+      print "|---:|:---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
       for (i = 1; i <= n; ++i) print rows[i]
       print ""
       if (big == 0)

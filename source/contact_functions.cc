@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace dualcontact
 {
@@ -71,6 +72,102 @@ namespace dualcontact
                            nodes[last - 1].first;
     width.extrapolated = 0.5 * (upper - lower);
     return width;
+  }
+
+  namespace
+  {
+    /**
+     * Half the extent of the longest run of sticking nodes in `line`
+     * (sorted by position), each end half-way to the next node of the line.
+     */
+    double
+    stick_half_width(const std::vector<std::pair<double, unsigned int>> &line)
+    {
+      double best = 0.;
+      for (std::size_t first = 0; first < line.size();)
+        {
+          if (line[first].second != 1)
+            {
+              ++first;
+              continue;
+            }
+          std::size_t last = first;
+          while (last + 1 < line.size() && line[last + 1].second == 1)
+            ++last;
+          const double lower =
+            first > 0 ? 0.5 * (line[first - 1].first + line[first].first) :
+                        line[first].first;
+          const double upper =
+            last + 1 < line.size() ?
+              0.5 * (line[last].first + line[last + 1].first) :
+              line[last].first;
+          best  = std::max(best, 0.5 * (upper - lower));
+          first = last + 1;
+        }
+      return best;
+    }
+  } // namespace
+
+  ContactZoneShape
+  contact_zone_shape(const std::vector<ZoneNode> &nodes,
+                     const unsigned int           tangent_dimensions,
+                     const double                 band)
+  {
+    ContactZoneShape shape;
+    double           centroid[2] = {0., 0.}, force = 0.;
+    for (const ZoneNode &node : nodes)
+      if (node.l1 > 0.)
+        {
+          shape.area += node.weight;
+          force += node.weight * node.l1;
+          for (unsigned int k = 0; k < 2; ++k)
+            centroid[k] += node.weight * node.l1 * node.t[k];
+        }
+    if (!(force > 0.))
+      return shape;
+    // the centre: the active node nearest the centroid (in 2D only its
+    // coordinate is used for the extent)
+    double nearest = std::numeric_limits<double>::max();
+    for (const ZoneNode &node : nodes)
+      if (node.l1 > 0.)
+        {
+          const double d = std::hypot(node.t[0] - centroid[0] / force,
+                                      node.t[1] - centroid[1] / force);
+          if (d < nearest)
+            {
+              nearest      = d;
+              shape.centre = node.t;
+            }
+        }
+    for (const ZoneNode &node : nodes)
+      if (node.l1 > 0.)
+        shape.extent = std::max(shape.extent,
+                                std::hypot(node.t[0] - shape.centre[0],
+                                           node.t[1] - shape.centre[1]));
+
+    // one line per tangent axis: the nodes within `band` of it
+    const unsigned int n_lines = tangent_dimensions;
+    for (unsigned int axis = 0; axis < n_lines; ++axis)
+      {
+        const unsigned int                           across = 1 - axis;
+        std::vector<std::pair<double, double>>       pressures;
+        std::vector<std::pair<double, unsigned int>> statuses;
+        for (const ZoneNode &node : nodes)
+          if (tangent_dimensions == 1 ||
+              std::abs(node.t[across] - shape.centre[across]) <= band)
+            {
+              pressures.emplace_back(node.t[axis], node.l1);
+              statuses.emplace_back(node.t[axis], node.status);
+            }
+        std::sort(pressures.begin(), pressures.end());
+        std::sort(statuses.begin(), statuses.end());
+        const ContactZoneWidth width = contact_zone_half_width(pressures);
+        shape.width.nodes += width.nodes / n_lines;
+        shape.width.extrapolated += width.extrapolated / n_lines;
+        shape.stick_width += stick_half_width(statuses) / n_lines;
+        shape.n_line_nodes += pressures.size();
+      }
+    return shape;
   }
 
   void

@@ -589,18 +589,23 @@ namespace dualcontact
   ContactZoneFigures
   ContactProblem<dim>::measure_contact_zone() const
   {
-    TimerOutput::Scope t(computing_timer, "measure contact zone");
-    ContactZoneFigures figures;
-    double             force = 0, peak = 0;
-    Tensor<1, dim>     on_obstacle;
-    std::vector<std::pair<double, double>> local; // (t, l1)
+    TimerOutput::Scope    t(computing_timer, "measure contact zone");
+    ContactZoneFigures    figures;
+    double                force = 0, peak = 0;
+    Tensor<1, dim>        on_obstacle;
+    std::vector<ZoneNode> local;
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         force += contact_set.nodes[s].weight * contact_set.l1[s];
         on_obstacle += contact_set.nodal_force(s);
         peak = std::max(peak, contact_set.l1[s]);
-        local.emplace_back(contact_set.nodes[s].position * contact_set.tangent,
-                           contact_set.l1[s]);
+        ZoneNode node;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          node.t[k] = contact_set.nodes[s].position * contact_set.tangents[k];
+        node.weight = contact_set.nodes[s].weight;
+        node.l1     = contact_set.l1[s];
+        node.status = contact_set.status(s);
+        local.push_back(node);
       }
     figures.contact_force = Utilities::MPI::sum(force, mpi_communicator);
     for (unsigned int c = 0; c < dim; ++c)
@@ -615,18 +620,20 @@ namespace dualcontact
     for (unsigned int c = 0; c < dim; ++c)
       figures.resultant[c] = resultant[c];
 
-    // the half-width along t, in 2D
-    if (dim == 2)
-      {
-        std::vector<std::pair<double, double>> nodes;
-        for (const auto &part :
-             Utilities::MPI::all_gather(mpi_communicator, local))
-          nodes.insert(nodes.end(), part.begin(), part.end());
-        std::sort(nodes.begin(), nodes.end());
-        const ContactZoneWidth width = contact_zone_half_width(nodes);
-        figures.half_width           = width.nodes;
-        figures.edge_half_width      = width.extrapolated;
-      }
+    // the half-width (2D) or radius (3D) of the zone and of its stick zone
+    std::vector<ZoneNode> nodes;
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, local))
+      nodes.insert(nodes.end(), part.begin(), part.end());
+    const ContactZoneShape shape =
+      contact_zone_shape(nodes,
+                         dim - 1,
+                         0.25 * contact_set.min_face_diameter());
+    figures.half_width      = shape.width.nodes;
+    figures.edge_half_width = shape.width.extrapolated;
+    figures.area            = shape.area;
+    figures.extent          = shape.extent;
+    if (contact_set.friction)
+      figures.stick_half_width = shape.stick_width;
 
     // errors against what the scene knows
     if (const Function<dim> *exact = scene.exact_pressure())
@@ -643,6 +650,9 @@ namespace dualcontact
     if (parameters.exact.contact_half_width > 0.)
       figures.half_width_error =
         figures.edge_half_width / parameters.exact.contact_half_width - 1.;
+    if (parameters.exact.stick_half_width > 0.)
+      figures.stick_half_width_error =
+        figures.stick_half_width / parameters.exact.stick_half_width - 1.;
     if (parameters.exact.peak_pressure > 0.)
       figures.peak_pressure_error =
         figures.max_pressure / parameters.exact.peak_pressure - 1.;

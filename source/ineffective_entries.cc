@@ -159,12 +159,16 @@ namespace dualcontact
        "solves)"},
       {!contact,
        "Exact solution",
-       {"Contact pressure", "Contact half-width", "Peak pressure"},
+       {"Contact pressure",
+        "Contact half-width",
+        "Stick half-width",
+        "Peak pressure"},
        "the scene has no contact boundary"},
-      {contact && geometry.dimension == 3,
+      {contact && law_entry.empty(),
        "Exact solution",
-       {"Contact half-width"},
-       "the half-width of the contact zone is measured in 2D only"}};
+       {"Stick half-width"},
+       "<Friction/Law> is " + quoted(friction.law) +
+         " (frictionless): there is no stick zone"}};
 
     std::vector<std::string> warnings;
     for (const Rule &rule : rules)

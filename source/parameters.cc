@@ -1114,9 +1114,19 @@ namespace dualcontact
       "Contact half-width",
       "0",
       Patterns::Double(0.),
-      "If known, the exact half-width a of the contact zone [length] (2D); "
-      "the relative error of the computed half-width (edges extrapolated) is "
+      "If known, the exact half-width a of the contact zone [length] in 2D, "
+      "its radius in 3D; the relative error of the computed one (edges "
+      "extrapolated; in 3D along two lines through the zone's centre) is "
       "then reported per cycle. 0: not known.");
+    prm.declare_entry(
+      "Stick half-width",
+      "0",
+      Patterns::Double(0.),
+      "If known, the exact half-width c of the stick zone [length] in 2D, "
+      "its radius in 3D (e.g. Cattaneo-Mindlin); the relative error of the "
+      "computed one (each end half-way between the last sticking and the "
+      "first slipping node) is then reported per cycle. Needs friction. 0: "
+      "not known.");
     prm.declare_entry("Peak pressure",
                       "0",
                       Patterns::Double(0.),
@@ -1133,6 +1143,7 @@ namespace dualcontact
     displacement       = Utilities::trim(prm.get("Displacement"));
     contact_pressure   = Utilities::trim(prm.get("Contact pressure"));
     contact_half_width = prm.get_double("Contact half-width");
+    stick_half_width   = prm.get_double("Stick half-width");
     peak_pressure      = prm.get_double("Peak pressure");
     prm.leave_subsection();
   }

@@ -4,6 +4,7 @@
 #include <dualcontact/report.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -410,6 +411,10 @@ namespace dualcontact
             c.push_back({3, {"a err", 10, [](const R &r) {
                                return scientific(r.zone.half_width_error);
                              }}});
+          if (parameters.exact.stick_half_width > 0.)
+            c.push_back({3, {"c err", 10, [](const R &r) {
+                               return scientific(r.zone.stick_half_width_error);
+                             }}});
           if (parameters.exact.peak_pressure > 0.)
             c.push_back({3, {"p0 err", 10, [](const R &r) {
                                return scientific(r.zone.peak_pressure_error);
@@ -741,11 +746,26 @@ namespace dualcontact
       pcout << "   contact half-width " << significant(zone.half_width)
             << " (nodes), " << significant(zone.edge_half_width)
             << " (edges extrapolated)\n";
+    else
+      pcout << wrap(
+        "   contact radius ",
+        {significant(zone.half_width) +
+           " (nodes on two lines through the centre), " +
+           significant(zone.edge_half_width) + " (edges extrapolated)",
+         "area " + significant(zone.area) + " (the disc of radius " +
+           significant(std::sqrt(zone.area / numbers::PI)) + ")",
+         "extent " + significant(zone.extent)},
+        ", ",
+        indent);
     std::vector<std::string> errors;
     if (scene.exact_pressure() != nullptr)
       errors.push_back("pressure (L2) " + significant(zone.pressure_error));
     if (parameters.exact.contact_half_width > 0.)
-      errors.push_back("half-width " + significant(zone.half_width_error));
+      errors.push_back((dim == 2 ? "half-width " : "radius ") +
+                       significant(zone.half_width_error));
+    if (parameters.exact.stick_half_width > 0.)
+      errors.push_back((dim == 2 ? "stick half-width " : "stick radius ") +
+                       significant(zone.stick_half_width_error));
     if (parameters.exact.peak_pressure > 0.)
       errors.push_back("peak " + significant(zone.peak_pressure_error));
     if (!errors.empty())
@@ -778,6 +798,8 @@ namespace dualcontact
         std::vector<std::string> items = {
           std::to_string(solve.n_stick) + " stick, " +
             std::to_string(solve.n_slip) + " slip nodes",
+          (dim == 2 ? "stick half-width " : "stick radius ") +
+            significant(zone.stick_half_width),
           "total tangential force " + significant(zone.tangential_force)};
         if (solve.threshold_steps > 0)
           items.push_back(std::to_string(solve.threshold_steps) +
@@ -869,7 +891,11 @@ namespace dualcontact
     t.add_value("contact_half_width", r.zone.half_width);
     t.add_value("contact_edge_half_width", r.zone.edge_half_width);
     t.add_value("pressure_error", r.zone.pressure_error);
+    t.add_value("contact_area", r.zone.area);
+    t.add_value("contact_extent", r.zone.extent);
+    t.add_value("stick_half_width", r.zone.stick_half_width);
     t.add_value("half_width_error", r.zone.half_width_error);
+    t.add_value("stick_half_width_error", r.zone.stick_half_width_error);
     t.add_value("peak_pressure_error", r.zone.peak_pressure_error);
     t.add_value("u_l2", r.errors.u_l2);
     t.add_value("l2_error", r.errors.l2);
@@ -924,6 +950,8 @@ namespace dualcontact
           add_error("p L2 err", r.zone.pressure_error);
         if (parameters.exact.contact_half_width > 0.)
           add_error("a err", r.zone.half_width_error);
+        if (parameters.exact.stick_half_width > 0.)
+          add_error("c err", r.zone.stick_half_width_error);
         if (parameters.exact.peak_pressure > 0.)
           add_error("p0 err", r.zone.peak_pressure_error);
         if (coulomb)

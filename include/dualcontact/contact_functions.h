@@ -6,6 +6,7 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <functional>
 #include <utility>
 #include <vector>
@@ -125,6 +126,59 @@ namespace dualcontact
   ContactZoneWidth
   contact_zone_half_width(
     const std::vector<std::pair<double, double>> &sorted_pressures);
+
+  /**
+   * One contact node as the zone measures see it: its coordinates in the
+   * mean tangent plane of Gamma_C (the second is 0 in 2D), its weight m_s,
+   * its pressure l1 and its status (ContactSet::status: 0 separated, 1 in
+   * contact and sticking, 2 slipping).
+   */
+  struct ZoneNode
+  {
+    std::array<double, 2> t{};
+    double                weight = 0.;
+    double                l1     = 0.;
+    unsigned int          status = 0;
+
+    // for Utilities::MPI::all_gather
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &t &weight &l1 &status;
+    }
+  };
+
+  /**
+   * The size of a contact zone and of its stick zone from the nodes (all
+   * ranks), in the tangent plane of Gamma_C.
+   * - 2D: the nodes form one line, measured as contact_zone_half_width does.
+   * - 3D: the centre is the active node nearest the pressure-weighted
+   *   centroid of the zone; two lines go through it along the tangent axes,
+   *   made of the nodes within `band` of them (a quarter of the smallest
+   *   contact face is right for a mesh whose node lines are straight there).
+   *   The radius is the mean of the two lines' half-widths: exact for a
+   *   circular zone centred on a node line, the mean extent otherwise. The
+   *   area and the extent (the largest distance of an active node from the
+   *   centre) describe a zone that is not a disc.
+   * The stick half-width (radius) is half the extent of the longest run of
+   * sticking nodes on each line, each end half-way to the next node, averaged
+   * over the lines; 0 without friction or without a sticking node.
+   */
+  struct ContactZoneShape
+  {
+    ContactZoneWidth      width; // half-width (2D) or radius (3D)
+    double                stick_width = 0.;
+    double                area        = 0.; // sum of m_s over active nodes
+    double                extent      = 0.;
+    std::array<double, 2> centre{};
+    unsigned int          n_line_nodes = 0; // nodes on the lines used
+  };
+
+  ContactZoneShape
+  contact_zone_shape(const std::vector<ZoneNode> &nodes,
+                     const unsigned int           tangent_dimensions,
+                     const double                 band);
 
   /**
    * The net loads on a body that only the contact may hold, for the

@@ -62,15 +62,24 @@ namespace dualcontact
     // the force of the foundation on the body, a vector
     std::array<double, 3> resultant{};
     double                tangential_force =
-      0.; // |sum_s m_s T_s l2_s| in the mean tangent plane
-    double max_pressure    = 0.; // max_s l1_s
-    double half_width      = 0.; // 2D: half the extent of the active nodes
-    double edge_half_width = 0.; // 2D: the same, edges extrapolated
-    double pressure_error  = 0.; // relative L2 on Gamma_C (exact known)
+      0.;                     // |sum_s m_s T_s l2_s| in the mean tangent plane
+    double max_pressure = 0.; // max_s l1_s
+    // the half-width (2D) or radius (3D) of the zone: half the extent of
+    // the active nodes (along two lines through its centre in 3D), and the
+    // same with the edges extrapolated (contact_zone_shape)
+    double half_width      = 0.;
+    double edge_half_width = 0.;
+    double area            = 0.; // 3D: sum of m_s over the active nodes
+    double extent          = 0.; // largest distance of an active node from
+                                 // the zone's centre
+    // the half-width (2D) or radius (3D) of the stick zone (friction)
+    double stick_half_width = 0.;
+    double pressure_error   = 0.; // relative L2 on Gamma_C (exact known)
     // relative errors against <Exact solution/Contact half-width> and
     // <Peak pressure> (0 where not known)
-    double half_width_error    = 0.;
-    double peak_pressure_error = 0.;
+    double half_width_error       = 0.;
+    double peak_pressure_error    = 0.;
+    double stick_half_width_error = 0.; // <Stick half-width>
   };
 
   /** compare_with_cold_start(): the same mesh solved from zero. */

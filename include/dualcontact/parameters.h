@@ -285,6 +285,7 @@ namespace dualcontact
     std::string displacement;            // empty: none known
     std::string contact_pressure;        // empty: none known
     double      contact_half_width = 0.; // 0: not known
+    double      stick_half_width   = 0.; // 0: not known
     double      peak_pressure      = 0.; // 0: not known
 
     static void

@@ -51,6 +51,7 @@ TEST_CASE("The free rigid motions: the 2D half disc slides along x, the 3D "
                                    "cycles = 1\n  set Initial global "
                                    "refinement = 1\nend\n")) == 3);
   CHECK(n_free_motions(SceneRun<3>("indenter_sphere_3d.prm", one_cycle)) == 0);
+  CHECK(n_free_motions(SceneRun<3>("sliding_block_3d.prm", one_cycle)) == 0);
 }
 
 TEST_CASE("The semi-coercive 3D half ball converges like the 2D one: at "
