@@ -86,6 +86,30 @@ namespace dualcontact_test
 
   using Run = SceneRun<2>;
 
+  /**
+   * 3D: the spacing of the contact nodes on the x axis (y = 0, x >= 0)
+   * around x = r, the contact element there (0 if the axis has no node
+   * beyond r); the same on every rank.
+   */
+  inline double
+  line_spacing(const SceneRun<3> &run, const double r)
+  {
+    const ContactSet<3> &contact = run.problem->contact();
+    std::vector<double>  local;
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      if (std::abs(contact.nodes[s].position[1]) < 1e-8 &&
+          contact.nodes[s].position[0] >= 0.)
+        local.push_back(contact.nodes[s].position[0]);
+    std::vector<double> x;
+    for (const auto &part : Utilities::MPI::all_gather(run.comm, local))
+      x.insert(x.end(), part.begin(), part.end());
+    std::sort(x.begin(), x.end());
+    for (std::size_t i = 1; i < x.size(); ++i)
+      if (x[i] >= r)
+        return x[i] - x[i - 1];
+    return 0.;
+  }
+
   /** Largest |v_i| over all entries; infinity if one is not finite. */
   inline double
   max_entry(const TrilinosWrappers::MPI::Vector &v, const MPI_Comm comm)

@@ -71,7 +71,7 @@ namespace
   std::string
   ball(const double shift, const double degrees, const std::string &more)
   {
-    const double angle = degrees * numbers::PI / 180.;
+    const double       angle = degrees * numbers::PI / 180.;
     std::ostringstream text;
     text.precision(17);
     text << "subsection Boundary conditions\n  set Displacements = 1: "
@@ -83,24 +83,6 @@ namespace
 
   const std::string one_cycle =
     "subsection Refinement\n  set Number of cycles = 1\nend\n";
-
-  /**
-   * The contact element at radius r: the spacing of the nodes on the x axis
-   * (through the ball's pole) around x = r.
-   */
-  double
-  element_at(const std::vector<Node> &nodes, const double r)
-  {
-    std::vector<double> x;
-    for (const Node &node : nodes)
-      if (std::abs(node.x[1]) < 1e-8 && node.x[0] >= 0.)
-        x.push_back(node.x[0]);
-    std::sort(x.begin(), x.end());
-    for (std::size_t i = 1; i < x.size(); ++i)
-      if (x[i] >= r)
-        return x[i] - x[i - 1];
-    return 0.;
-  }
 
   /** Hertz's radius of a ball (R = 1) on a rigid plane under the load P. */
   double
@@ -127,14 +109,13 @@ TEST_CASE("3D friction patch: a uniform pressure and shear below F p stick "
   bool   all_stick = true;
   for (const Node &node : gather_nodes(run))
     {
-      worst_l1 = std::max(worst_l1, std::abs(node.l1 - 1.));
-      worst_l2 = std::max(worst_l2,
+      worst_l1  = std::max(worst_l1, std::abs(node.l1 - 1.));
+      worst_l2  = std::max(worst_l2,
                           std::hypot(node.l2[0] - 0.2, node.l2[1] - 0.1) +
                             std::abs(node.l2[2]));
       all_stick = all_stick && node.status == 1;
     }
-  INFO("largest |l1 - 1| " << worst_l1 << ", |l2 - (0.2, 0.1)| "
-                           << worst_l2);
+  INFO("largest |l1 - 1| " << worst_l1 << ", |l2 - (0.2, 0.1)| " << worst_l2);
   CHECK(worst_l1 <= 1e-8);
   CHECK(worst_l2 <= 1e-8);
   CHECK(all_stick);
@@ -150,12 +131,11 @@ TEST_CASE("3D block in partial slip: |l2| <= F l1 at every node, the "
   const CycleResult &r = run.last();
   CHECK(r.zone.contact_force == Approx(4.).epsilon(1e-10));
   // the applied shear (0.25 cos 30, 0.25 sin 30) on the 2 x 2 top
-  CHECK(r.zone.resultant[0] ==
-        Approx(-std::sqrt(3.) / 2.).epsilon(1e-8));
+  CHECK(r.zone.resultant[0] == Approx(-std::sqrt(3.) / 2.).epsilon(1e-8));
   CHECK(r.zone.resultant[1] == Approx(-0.5).epsilon(1e-8));
   CHECK(r.zone.resultant[2] == Approx(4.).epsilon(1e-10));
   double       excess = 0., centre_status = 0., corner_status = 2.;
-  const double F      = 0.4;
+  const double F = 0.4;
   for (const Node &node : gather_nodes(run))
     {
       const double shear = std::hypot(node.l2[0], node.l2[1]);
@@ -189,29 +169,29 @@ TEST_CASE("3D friction is isotropic: the same tangential shift of the ball "
                                        "ratio = 0.3\nend\n";
   struct Measured
   {
-    double                     stick, radius, force_angle, force;
-    std::vector<double>        bins; // l1, along, across per (ring, sector)
-    double                     peak, h;
+    double              stick, radius, force_angle, force;
+    std::vector<double> bins; // l1, along, across per (ring, sector)
+    double              peak, h;
   };
   const unsigned int rings = 6, sectors = 8;
   const auto         measure = [&](const double degrees) {
     const Run3   run("hertz_3d_friction.prm", ball(0.0015, degrees, more));
     const double angle = degrees * numbers::PI / 180.;
     Measured     m;
-    m.stick       = run.last().zone.stick_half_width;
-    m.radius      = run.last().zone.edge_half_width;
-    m.force_angle = std::atan2(-run.last().zone.resultant[1],
-                               -run.last().zone.resultant[0]) -
-                    angle;
-    m.force = run.last().zone.tangential_force;
-    m.peak  = run.last().zone.max_pressure;
+    m.stick  = run.last().zone.stick_half_width;
+    m.radius = run.last().zone.edge_half_width;
+    m.force_angle =
+      std::atan2(-run.last().zone.resultant[1], -run.last().zone.resultant[0]) -
+      angle;
+    m.force                       = run.last().zone.tangential_force;
+    m.peak                        = run.last().zone.max_pressure;
     const std::vector<Node> nodes = gather_nodes(run);
-    m.h                           = element_at(nodes, m.stick);
+    m.h                           = line_spacing(run, m.stick);
     // the tractions in the load's frame (l1, along, across), smoothed by a
     // Gaussian of the width of a contact element around sample points
     // fixed in that frame: a node on a sample's sector boundary does not
     // jump between bins as the load turns
-    const double width = element_at(nodes, 0.5 * m.radius);
+    const double width = line_spacing(run, 0.5 * m.radius);
     for (unsigned int i = 1; i <= rings; ++i)
       for (unsigned int j = 0; j < sectors; ++j)
         {
@@ -221,8 +201,8 @@ TEST_CASE("3D friction is isotropic: the same tangential shift of the ball "
           double       sums[4] = {0., 0., 0., 0.};
           for (const Node &node : nodes)
             {
-              const double d2 = std::pow(node.x[0] - px, 2) +
-                                std::pow(node.x[1] - py, 2);
+              const double d2 =
+                std::pow(node.x[0] - px, 2) + std::pow(node.x[1] - py, 2);
               const double w =
                 node.weight * std::exp(-d2 / (2. * width * width));
               sums[0] += w * node.l1;
@@ -255,8 +235,8 @@ TEST_CASE("3D friction is isotropic: the same tangential shift of the ball "
                 << turned.stick << " vs " << zero.stick
                 << ", force direction off by " << turned.force_angle
                 << " rad, |Q| " << turned.force << " vs " << zero.force
-                << ", binned tractions differ by at most "
-                << worst / zero.peak << " p0\n";
+                << ", binned tractions differ by at most " << worst / zero.peak
+                << " p0\n";
       CHECK(std::abs(turned.stick - zero.stick) <= h);
       // the clamp prescribes the shift: the force follows it up to the
       // mesh's own anisotropy (0.05 degrees measured at 30 degrees)
@@ -284,7 +264,7 @@ TEST_CASE("Partial slip of a ball (Cattaneo-Mindlin): at nu = 0.45 the stick "
       const double       Q = r.zone.tangential_force;
       const double       a = hertz_radius(P, E, nu);
       const double       c = a * std::cbrt(1. - Q / (F * P));
-      const double       h = element_at(gather_nodes(run), c);
+      const double       h = line_spacing(run, c);
       std::cout << "Cattaneo-Mindlin, Q/(F P) = " << Q / (F * P)
                 << ": P = " << P << ", a = " << r.zone.edge_half_width
                 << " (Hertz " << a << "), c = " << r.zone.stick_half_width
