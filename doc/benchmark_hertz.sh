@@ -76,9 +76,12 @@ fi
 prm="$tmp/hertz_benchmark.prm"
 out="$tmp/output"
 
-# Later 'set' lines override earlier ones, so appending is enough.
-cp "$repo/prm/$scene.prm" "$prm"
-cat >> "$prm" <<EOF
+# The overrides go to the program as --set arguments (the scene may set the
+# same entries, and a second 'set' in one file is an input error); the scene
+# with the overrides appended is what prm_value below reads (later 'set'
+# lines win there).
+overrides="$tmp/overrides.prm"
+cat > "$overrides" <<EOF
 
 # ---- overrides of doc/benchmark_hertz.sh ----
 subsection Refinement
@@ -97,8 +100,22 @@ EOF
 # further entries from the caller, e.g.
 #   EXTRA_PRM=$'subsection Friction\n set Threshold iteration = nested\nend'
 if [ -n "${EXTRA_PRM:-}" ]; then
-  printf '%s\n' "$EXTRA_PRM" >> "$prm"
+  printf '%s\n' "$EXTRA_PRM" >> "$overrides"
 fi
+cat "$repo/prm/$scene.prm" "$overrides" > "$prm"
+set_args=()
+while IFS= read -r entry; do
+  set_args+=(--set "$entry")
+done < <(awk '
+  { line = $0; sub(/#.*/, "", line); gsub(/^[ \t]+|[ \t]+$/, "", line) }
+  line ~ /^subsection[ \t]/ { name = line; sub(/^subsection[ \t]+/, "", name); path[++depth] = name; next }
+  line == "end" { if (depth > 0) --depth; next }
+  line ~ /^set[ \t]/ {
+    key = line; sub(/^set[ \t]+/, "", key); value = key
+    sub(/[ \t]*=.*/, "", key); sub(/^[^=]*=[ \t]*/, "", value)
+    full = ""; for (i = 1; i <= depth; ++i) full = full path[i] "/"
+    print full key "=" value
+  }' "$overrides")
 
 # Open MPI refuses to run as root without these.
 export OMPI_ALLOW_RUN_AS_ROOT=1
@@ -201,7 +218,7 @@ status=0
 # The log goes into doc/: the temporary folder (output directory, parameter
 # file in messages) is named, not printed as a path of this machine.
 # shellcheck disable=SC2086
-mpirun ${MPIRUN_FLAGS:-} -np "$np" "$bin" "$prm" 2>&1 |
+mpirun ${MPIRUN_FLAGS:-} -np "$np" "$bin" "$repo/prm/$scene.prm" "${set_args[@]}" 2>&1 |
   awk -v t="$tmp" '{ while (t != "" && (i = index($0, t)) > 0) $0 = substr($0, 1, i - 1) "<temporary folder>" substr($0, i + length(t)); print; fflush() }' |
   tee "$log" || status=$?
 elapsed=$(( $(date +%s) - start ))

@@ -441,6 +441,38 @@ namespace dualcontact
     return control.last_step();
   }
 
+  template <int dim>
+  std::pair<bool, unsigned int>
+  ElasticSolver<dim>::try_solve(const TrilinosWrappers::SparseMatrix &matrix,
+                                TrilinosWrappers::MPI::Vector        &x,
+                                const TrilinosWrappers::MPI::Vector  &rhs,
+                                const double                          tolerance,
+                                const unsigned int max_iterations) const
+  {
+    Assert(preconditioner != nullptr, ExcMessage("initialize() first"));
+    const double rhs_norm = rhs.l2_norm();
+    if (rhs_norm == 0.)
+      {
+        x = 0;
+        return {true, 0};
+      }
+    SolverControl                           control(std::min(max_iterations,
+                                   parameters.max_linear_iterations),
+                          tolerance * rhs_norm,
+                          /*log_history=*/false,
+                          /*log_result=*/false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(matrix, x, rhs, *preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &exc)
+      {
+        return {false, exc.last_step};
+      }
+    return {true, control.last_step()};
+  }
+
 #define DUALCONTACT_INSTANTIATE(dim)                                                   \
   template void            assemble_elasticity<dim>(const Mapping<dim> &,              \
                                          const DoFHandler<dim> &,           \

@@ -125,6 +125,19 @@ namespace dualcontact
           const TrilinosWrappers::MPI::Vector  &rhs,
           const double                          tolerance = 0.) const;
 
+    /**
+     * The same with at most `max_iterations` CG iterations, and without
+     * throwing: returns whether CG converged and the iterations it took (x
+     * holds the last iterate either way). For a preconditioner built for an
+     * earlier matrix, which may have become a poor one for this matrix.
+     */
+    std::pair<bool, unsigned int>
+    try_solve(const TrilinosWrappers::SparseMatrix &matrix,
+              TrilinosWrappers::MPI::Vector        &x,
+              const TrilinosWrappers::MPI::Vector  &rhs,
+              const double                          tolerance,
+              const unsigned int                    max_iterations) const;
+
     bool
     initialized() const
     {
