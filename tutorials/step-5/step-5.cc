@@ -86,9 +86,9 @@ namespace Step5
       {
         const Tensor<1, 2> y({trials[i], trials[i + 1]});
         const Tensor<1, 2> p = project_onto_disc(y, g);
-        pcout << "  (" << format("%+.2f", y[0]) << ", "
-              << format("%+.2f", y[1]) << ") -> (" << format("%+.3f", p[0])
-              << ", " << format("%+.3f", p[1])
+        pcout << "  (" << format("%+.2f", y[0]) << ", " << format("%+.2f", y[1])
+              << ") -> (" << format("%+.3f", p[0]) << ", "
+              << format("%+.3f", p[1])
               << ")  |l2| = " << format("%.3f", p.norm())
               << (y.norm() < g ? "  sticks" : "  slips") << "\n";
       }
@@ -216,10 +216,10 @@ namespace Step5
   // the map of the stick and slip zones.
   struct ZoneFigures
   {
-    double excess = 0.;     // max (|l2| - g), relative to max g
-    double slip_short = 0.; // max (g - |l2|) over slipping nodes, same
-    double pressure_error = 0., traction_error = 0.;
-    double element_at_c = 0.;
+    double       excess     = 0.; // max (|l2| - g), relative to max g
+    double       slip_short = 0.; // max (g - |l2|) over slipping nodes, same
+    double       pressure_error = 0., traction_error = 0.;
+    double       element_at_c = 0.;
     unsigned int n_stick = 0, n_slip = 0;
   };
 
@@ -333,8 +333,8 @@ namespace Step5
               << format("%+9.1e", r.zone.stick_half_width / exact.c - 1.)
               << "\n";
       }
-    const CycleResult &last     = problem.results().back();
-    const auto [P, Q]           = loads(last);
+    const CycleResult &last = problem.results().back();
+    const auto [P, Q]       = loads(last);
     const CattaneoMindlin exact(parameters, P, Q);
     pcout << "Hertz and Cattaneo-Mindlin for the last cycle: a = "
           << format("%.5f", exact.a) << ", p0 = " << format("%.3f", exact.p0)
@@ -349,14 +349,11 @@ namespace Step5
     MPI_Barrier(comm);
     char name[32];
     std::snprintf(name, sizeof(name), "/contact_%02u.csv", last.mesh.cycle);
-    const ZoneFigures zone = compare_zone(read_contact_csv(directory + name),
-                                          exact,
-                                          directory,
-                                          root);
-    pcout << "\nThe nodes of the last cycle (contact" << (name + 8) << "): "
-          << zone.n_stick << " stick, " << zone.n_slip << " slip\n"
-          << "  friction law: max (|l2| - g) = "
-          << format("%.1e", zone.excess)
+    const ZoneFigures zone =
+      compare_zone(read_contact_csv(directory + name), exact, directory, root);
+    pcout << "\nThe nodes of the last cycle (contact" << (name + 8)
+          << "): " << zone.n_stick << " stick, " << zone.n_slip << " slip\n"
+          << "  friction law: max (|l2| - g) = " << format("%.1e", zone.excess)
           << " g_max, slipping nodes max (g - |l2|) = "
           << format("%.1e", zone.slip_short) << " g_max\n"
           << "  relative L2 errors: pressure against Hertz "
@@ -396,8 +393,7 @@ namespace Step5
     // element.
     check(pcout,
           std::abs(last.zone.stick_half_width / exact.c - 1.) <= 0.05 ||
-            std::abs(last.zone.stick_half_width - exact.c) <=
-              zone.element_at_c,
+            std::abs(last.zone.stick_half_width - exact.c) <= zone.element_at_c,
           "c within 5 % of Cattaneo-Mindlin's (or one contact element)");
 
     // 5. The profiles, on this second mesh (README.md, "How close the
