@@ -106,16 +106,7 @@ cat "$repo/prm/$scene.prm" "$overrides" > "$prm"
 set_args=()
 while IFS= read -r entry; do
   set_args+=(--set "$entry")
-done < <(awk '
-  { line = $0; sub(/#.*/, "", line); gsub(/^[ \t]+|[ \t]+$/, "", line) }
-  line ~ /^subsection[ \t]/ { name = line; sub(/^subsection[ \t]+/, "", name); path[++depth] = name; next }
-  line == "end" { if (depth > 0) --depth; next }
-  line ~ /^set[ \t]/ {
-    key = line; sub(/^set[ \t]+/, "", key); value = key
-    sub(/[ \t]*=.*/, "", key); sub(/^[^=]*=[ \t]*/, "", value)
-    full = ""; for (i = 1; i <= depth; ++i) full = full path[i] "/"
-    print full key "=" value
-  }' "$overrides")
+done < <(awk -f "$doc/prm_overrides.awk" "$overrides")
 
 # Open MPI refuses to run as root without these.
 export OMPI_ALLOW_RUN_AS_ROOT=1

@@ -177,9 +177,9 @@ for rep in $(seq 1 "$repeat"); do
     prm="$tmp/$run.$rep.prm"
     out="$tmp/$run.$rep"
     log="$tmp/$run.$rep.log"
-    # Later 'set' lines override earlier ones, so appending is enough.
-    cp "$scene_prm" "$prm"
-    cat >> "$prm" <<EOF
+    # The overrides go to the program as --set arguments (the scene may set
+    # the same entries, and a second 'set' in one file is an input error).
+    cat > "$prm" <<EOF
 
 # ---- overrides of doc/work_precision.sh ----
 subsection Refinement
@@ -195,13 +195,17 @@ subsection Output
 end
 EOF
     if [ -n "${EXTRA_PRM:-}" ]; then printf '%s\n' "$EXTRA_PRM" >> "$prm"; fi
+    set_args=()
+    while IFS= read -r entry; do
+      set_args+=(--set "$entry")
+    done < <(awk -f "$doc/prm_overrides.awk" "$prm")
 
     if [ "$repeat" -gt 1 ]; then printf 'work_precision: [%d/%d] %-16s %2d cycles ... ' "$rep" "$repeat" "$run" "$cycles"
     else printf 'work_precision: %-16s %2d cycles ... ' "$run" "$cycles"; fi
     t0=$(date +%s)
     status=0
     # shellcheck disable=SC2086
-    mpirun ${MPIRUN_FLAGS:-} -np "$np" "$bin" "$prm" > "$log" 2>&1 || status=$?
+    mpirun ${MPIRUN_FLAGS:-} -np "$np" "$bin" "$scene_prm" "${set_args[@]}" > "$log" 2>&1 || status=$?
     t1=$(date +%s)
     if [ "$status" -ne 0 ] || [ ! -s "$out/cycles.csv" ]; then
       echo "FAILED (exit status $status)"
