@@ -142,18 +142,9 @@ if ! "$bin" --print-parameters > "$defaults" 2> /dev/null; then
 fi
 prm_value() {  # prm_value 'Subsection/Entry' fallback
   local value
-  value="$(awk -v want="$1" '
-    FNR == 1 { depth = 0 }
-    { line = $0; sub(/#.*/, "", line); gsub(/^[ \t]+|[ \t]+$/, "", line) }
-    line ~ /^subsection[ \t]/ { name = line; sub(/^subsection[ \t]+/, "", name); path[++depth] = name; next }
-    line == "end" { if (depth > 0) --depth; next }
-    line ~ /^set[ \t]/ {
-      key = line; sub(/^set[ \t]+/, "", key); value = key
-      sub(/[ \t]*=.*/, "", key); sub(/^[^=]*=[ \t]*/, "", value)
-      full = ""; for (i = 1; i <= depth; ++i) full = full path[i] "/"
-      if (full key == want) found = value
-    }
-    END { print found }' "$defaults" "$prm")"
+  value="$({ awk -f "$doc/prm_overrides.awk" "$defaults"
+              awk -f "$doc/prm_overrides.awk" "$prm"; } |
+            awk -v want="$1" 'index($0, want "=") == 1 { found = substr($0, length(want) + 2) } END { print found }')"
   printf '%s' "${value:-$2}"
 }
 is_zero() {  # every component of "a; b" is the number 0
