@@ -396,8 +396,8 @@ namespace dualcontact
   ParameterReader::ParameterReader(ParameterHandler &prm)
       : prm(prm)
       , catalog(std::make_unique<Catalog>(prm))
-      , scene(std::make_unique<Layer>(Layer{true, {}}))
-      , overrides(std::make_unique<Layer>(Layer{false, {}}))
+      , scene(std::make_unique<Layer>(Layer{true, {}, {}}))
+      , overrides(std::make_unique<Layer>(Layer{false, {}, {}}))
   {}
 
   ParameterReader::~ParameterReader() = default;

@@ -1116,8 +1116,11 @@ namespace dualcontact
       Patterns::Double(0.),
       "If known, the exact half-width a of the contact zone [length] in 2D, "
       "its radius in 3D; the relative error of the computed one (edges "
-      "extrapolated; in 3D along two lines through the zone's centre) is "
-      "then reported per cycle. 0: not known.");
+      "extrapolated; in 3D along two lines through the zone's centre, where "
+      "the contact begins) is then reported per cycle. The zone is measured "
+      "whole: a model cut by symmetry planes through that centre (a half or "
+      "quarter ball) is measured as mirrored across them; a zone cut "
+      "anywhere else is measured as the part in the model. 0: not known.");
     prm.declare_entry(
       "Stick half-width",
       "0",
@@ -1237,13 +1240,13 @@ namespace dualcontact
       if (!three)
         return;
       const std::vector<std::array<std::string, 3>> defaults = {
-        {"Geometry", "Lower left corner", "0, 0, 0"},
-        {"Geometry", "Upper right corner", "1, 1, 1"},
-        {"Geometry", "Subdivisions", "1, 1, 1"},
-        {"Geometry", "Center", "0, 0, 0"},
-        {"Foundation", "Point", "0, 0, 0"},
-        {"Foundation", "Normal", "0, 0, 1"},
-        {"Obstacle", "Center", "0, 0, 0"}};
+        {{"Geometry", "Lower left corner", "0, 0, 0"}},
+        {{"Geometry", "Upper right corner", "1, 1, 1"}},
+        {{"Geometry", "Subdivisions", "1, 1, 1"}},
+        {{"Geometry", "Center", "0, 0, 0"}},
+        {{"Foundation", "Point", "0, 0, 0"}},
+        {{"Foundation", "Normal", "0, 0, 1"}},
+        {{"Obstacle", "Center", "0, 0, 0"}}};
       for (const auto &[subsection, entry, value] : defaults)
         if (given.count(subsection + "/" + entry) == 0)
           {
