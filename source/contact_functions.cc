@@ -114,22 +114,33 @@ namespace dualcontact
                      const double                 band)
   {
     ContactZoneShape shape;
-    double           centroid[2] = {0., 0.}, force = 0.;
+    double           smallest_gap = std::numeric_limits<double>::max();
     for (const ZoneNode &node : nodes)
       if (node.l1 > 0.)
         {
           shape.area += node.weight;
+          smallest_gap = std::min(smallest_gap, node.gap0);
+        }
+    if (!(shape.area > 0.))
+      return shape;
+
+    // the centre: where the contact begins, i.e. among the active nodes
+    // with the smallest initial gap (ties within round-off of the mesh
+    // size: a flat face) the one nearest their pressure-weighted centroid
+    const auto first_contact = [&](const ZoneNode &node) {
+      return node.l1 > 0. && node.gap0 <= smallest_gap + 1e-10 * band;
+    };
+    double centroid[2] = {0., 0.}, force = 0.;
+    for (const ZoneNode &node : nodes)
+      if (first_contact(node))
+        {
           force += node.weight * node.l1;
           for (unsigned int k = 0; k < 2; ++k)
             centroid[k] += node.weight * node.l1 * node.t[k];
         }
-    if (!(force > 0.))
-      return shape;
-    // the centre: the active node nearest the centroid (in 2D only its
-    // coordinate is used for the extent)
     double nearest = std::numeric_limits<double>::max();
     for (const ZoneNode &node : nodes)
-      if (node.l1 > 0.)
+      if (first_contact(node))
         {
           const double d = std::hypot(node.t[0] - centroid[0] / force,
                                       node.t[1] - centroid[1] / force);
@@ -146,27 +157,56 @@ namespace dualcontact
                                            node.t[1] - shape.centre[1]));
 
     // one line per tangent axis: the nodes within `band` of it
+    struct LineNode
+    {
+      double       position, l1;
+      unsigned int status;
+      bool
+      operator<(const LineNode &other) const
+      {
+        return position < other.position;
+      }
+    };
     const unsigned int n_lines = tangent_dimensions;
     for (unsigned int axis = 0; axis < n_lines; ++axis)
       {
-        const unsigned int                           across = 1 - axis;
-        std::vector<std::pair<double, double>>       pressures;
-        std::vector<std::pair<double, unsigned int>> statuses;
+        const unsigned int    across = 1 - axis;
+        const double          c      = shape.centre[axis];
+        std::vector<LineNode> line;
+        bool                  below = false, above = false;
         for (const ZoneNode &node : nodes)
           if (tangent_dimensions == 1 ||
               std::abs(node.t[across] - shape.centre[across]) <= band)
             {
-              pressures.emplace_back(node.t[axis], node.l1);
-              statuses.emplace_back(node.t[axis], node.status);
+              line.push_back({node.t[axis], node.l1, node.status});
+              below = below || node.t[axis] < c - band;
+              above = above || node.t[axis] > c + band;
             }
-        std::sort(pressures.begin(), pressures.end());
-        std::sort(statuses.begin(), statuses.end());
+        // a line that stops at the centre: the model is cut there by a
+        // plane of symmetry, and the line is completed by its mirror image
+        if (below != above)
+          {
+            ++shape.mirrored;
+            for (std::size_t i = 0, n = line.size(); i < n; ++i)
+              if (std::abs(line[i].position - c) > band)
+                line.push_back(
+                  {2. * c - line[i].position, line[i].l1, line[i].status});
+          }
+        std::sort(line.begin(), line.end());
+        std::vector<std::pair<double, double>>       pressures;
+        std::vector<std::pair<double, unsigned int>> statuses;
+        for (const LineNode &node : line)
+          {
+            pressures.emplace_back(node.position, node.l1);
+            statuses.emplace_back(node.position, node.status);
+          }
         const ContactZoneWidth width = contact_zone_half_width(pressures);
         shape.width.nodes += width.nodes / n_lines;
         shape.width.extrapolated += width.extrapolated / n_lines;
         shape.stick_width += stick_half_width(statuses) / n_lines;
-        shape.n_line_nodes += pressures.size();
       }
+    // the whole zone's measure: twice the model's per cut
+    shape.area *= std::pow(2., shape.mirrored);
     return shape;
   }
 

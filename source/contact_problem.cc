@@ -603,6 +603,7 @@ namespace dualcontact
         for (unsigned int k = 0; k < dim - 1; ++k)
           node.t[k] = contact_set.nodes[s].position * contact_set.tangents[k];
         node.weight = contact_set.nodes[s].weight;
+        node.gap0   = contact_set.nodes[s].gap0;
         node.l1     = contact_set.l1[s];
         node.status = contact_set.status(s);
         local.push_back(node);
@@ -632,6 +633,7 @@ namespace dualcontact
     figures.edge_half_width = shape.width.extrapolated;
     figures.area            = shape.area;
     figures.extent          = shape.extent;
+    figures.mirrored        = shape.mirrored;
     if (contact_set.friction)
       figures.stick_half_width = shape.stick_width;
 

@@ -757,6 +757,11 @@ namespace dualcontact
          "extent " + significant(zone.extent)},
         ", ",
         indent);
+    if (zone.mirrored > 0)
+      pcout << "   (the model ends at the zone's centre: measured as mirrored "
+               "across "
+            << (zone.mirrored == 1 ? "that plane" : "those planes")
+            << (dim == 3 ? ", area of the whole zone" : "") << ")\n";
     std::vector<std::string> errors;
     if (scene.exact_pressure() != nullptr)
       errors.push_back("pressure (L2) " + significant(zone.pressure_error));

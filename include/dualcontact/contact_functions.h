@@ -130,13 +130,14 @@ namespace dualcontact
   /**
    * One contact node as the zone measures see it: its coordinates in the
    * mean tangent plane of Gamma_C (the second is 0 in 2D), its weight m_s,
-   * its pressure l1 and its status (ContactSet::status: 0 separated, 1 in
-   * contact and sticking, 2 slipping).
+   * its initial gap g0, its pressure l1 and its status (ContactSet::status:
+   * 0 separated, 1 in contact and sticking, 2 slipping).
    */
   struct ZoneNode
   {
     std::array<double, 2> t{};
     double                weight = 0.;
+    double                gap0   = 0.;
     double                l1     = 0.;
     unsigned int          status = 0;
 
@@ -145,22 +146,32 @@ namespace dualcontact
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &t &weight &l1 &status;
+      archive &t &weight &gap0 &l1 &status;
     }
   };
 
   /**
    * The size of a contact zone and of its stick zone from the nodes (all
    * ranks), in the tangent plane of Gamma_C.
-   * - 2D: the nodes form one line, measured as contact_zone_half_width does.
-   * - 3D: the centre is the active node nearest the pressure-weighted
-   *   centroid of the zone; two lines go through it along the tangent axes,
-   *   made of the nodes within `band` of them (a quarter of the smallest
-   *   contact face is right for a mesh whose node lines are straight there).
-   *   The radius is the mean of the two lines' half-widths: exact for a
-   *   circular zone centred on a node line, the mean extent otherwise. The
-   *   area and the extent (the largest distance of an active node from the
-   *   centre) describe a zone that is not a disc.
+   * - The centre is where the contact begins: among the active nodes with
+   *   the smallest initial gap g0, the one nearest their pressure-weighted
+   *   centroid (on a flat face all gaps are equal and it is the node
+   *   nearest the centroid of the zone).
+   * - 2D: the nodes form one line; 3D: two lines go through the centre
+   *   along the tangent axes, made of the nodes within `band` of them (a
+   *   quarter of the smallest contact face is right for a mesh whose node
+   *   lines are straight there). Each line is measured as
+   *   contact_zone_half_width does, and the radius is the mean of the two
+   *   lines' half-widths: exact for a circular zone centred on a node line,
+   *   the mean extent otherwise.
+   * - A line with nodes on one side of the centre only is a model cut by a
+   *   plane of symmetry through the centre (a half or quarter model of a
+   *   ball): it is completed by its mirror image, `mirrored` counts these
+   *   lines, and the area is the whole zone's (the model's times 2 per cut).
+   *   A zone cut anywhere else is measured as it is in the model.
+   * - The area (sum of m_s over the active nodes) and the extent (the
+   *   largest distance of an active node from the centre) describe a zone
+   *   that is not a disc.
    * The stick half-width (radius) is half the extent of the longest run of
    * sticking nodes on each line, each end half-way to the next node, averaged
    * over the lines; 0 without friction or without a sticking node.
@@ -169,10 +180,10 @@ namespace dualcontact
   {
     ContactZoneWidth      width; // half-width (2D) or radius (3D)
     double                stick_width = 0.;
-    double                area        = 0.; // sum of m_s over active nodes
+    double                area        = 0.; // of the whole zone (see above)
     double                extent      = 0.;
     std::array<double, 2> centre{};
-    unsigned int          n_line_nodes = 0; // nodes on the lines used
+    unsigned int          mirrored = 0; // lines completed by symmetry
   };
 
   ContactZoneShape

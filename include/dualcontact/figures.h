@@ -72,6 +72,9 @@ namespace dualcontact
     double area            = 0.; // 3D: sum of m_s over the active nodes
     double extent          = 0.; // largest distance of an active node from
                                  // the zone's centre
+    // lines through the centre that stop there (a model cut by symmetry
+    // planes): measured with their mirror image, area times 2 per cut
+    unsigned int mirrored = 0;
     // the half-width (2D) or radius (3D) of the stick zone (friction)
     double stick_half_width = 0.;
     double pressure_error   = 0.; // relative L2 on Gamma_C (exact known)

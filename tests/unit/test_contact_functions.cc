@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <tuple>
 #include <vector>
 
 using namespace dualcontact;
@@ -148,6 +149,126 @@ TEST_CASE("Contact zone half-width: outermost nodes, and the edges "
   std::vector<std::pair<double, double>> none = {{0., 0.}, {1., 0.}};
   CHECK(contact_zone_half_width(none).nodes == 0.);
   CHECK(contact_zone_half_width(none).extrapolated == 0.);
+}
+
+namespace
+{
+  // the contact nodes of a ball on a plane: a grid of spacing h over
+  // [i0, 20] x [j0, 20] (i0, j0 = -20 for the whole plane, 0 for a model cut
+  // at the ball's axis) with the gap r^2 / 2, the Hertz pressure of radius
+  // a and a stick zone of radius c
+  std::vector<ZoneNode>
+  ball_nodes(const int i0, const int j0, const double h)
+  {
+    const double          a = 0.33, c = 0.21;
+    std::vector<ZoneNode> nodes;
+    for (int i = i0; i <= 20; ++i)
+      for (int j = j0; j <= 20; ++j)
+        {
+          ZoneNode     node;
+          const double r2 = h * h * (i * i + j * j);
+          node.t          = {{i * h, j * h}};
+          // a node on a cut owns half a cell there (a quarter at a corner)
+          node.weight = h * h * (i == i0 && i0 == 0 ? 0.5 : 1.) *
+                        (j == j0 && j0 == 0 ? 0.5 : 1.);
+          node.gap0   = 0.5 * r2;
+          node.l1     = std::sqrt(std::max(1. - r2 / (a * a), 0.));
+          node.status = node.l1 > 0. ? (r2 < c * c ? 1 : 2) : 0;
+          nodes.push_back(node);
+        }
+    return nodes;
+  }
+} // namespace
+
+TEST_CASE("Contact zone shape in 3D: the same radius, stick radius and area "
+          "on the whole plane and on a half or quarter model",
+          "[functions]")
+{
+  const double           h = 0.05, band = 0.25 * h;
+  const ContactZoneShape whole =
+    contact_zone_shape(ball_nodes(-20, -20, h), 2, band);
+  CHECK(whole.mirrored == 0);
+  CHECK(whole.centre[0] == Approx(0.).margin(1e-14));
+  CHECK(whole.centre[1] == Approx(0.).margin(1e-14));
+  CHECK(whole.width.nodes == Approx(0.3)); // nodes at +-0.3 on both lines
+  CHECK(std::abs(whole.width.extrapolated - 0.33) < 0.2 * h);
+  // stick nodes up to 0.2, the run's ends half-way to the slip nodes
+  CHECK(whole.stick_width == Approx(0.225));
+  // the active nodes' cells cover the disc to within a cell per node on
+  // its edge
+  CHECK(std::abs(whole.area - M_PI * 0.33 * 0.33) < 2. * M_PI * 0.33 * h);
+  CHECK(whole.extent == Approx(std::hypot(0.25, 0.2))); // r < a nearest a
+
+  for (const auto &[i0, j0, cuts] :
+       {std::tuple<int, int, unsigned int>{0, -20, 1}, {-20, 0, 1}, {0, 0, 2}})
+    {
+      CAPTURE(i0, j0);
+      const ContactZoneShape cut =
+        contact_zone_shape(ball_nodes(i0, j0, h), 2, band);
+      CHECK(cut.mirrored == cuts);
+      CHECK(cut.width.nodes == Approx(whole.width.nodes));
+      CHECK(cut.width.extrapolated == Approx(whole.width.extrapolated));
+      CHECK(cut.stick_width == Approx(whole.stick_width));
+      CHECK(cut.area == Approx(whole.area));
+      CHECK(cut.extent == Approx(whole.extent));
+    }
+
+  // a flat face (all gaps equal): the centre is the node nearest the
+  // pressure centroid, and a zone cut off-centre is not mirrored
+  std::vector<ZoneNode> flat;
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 4; ++j)
+      {
+        ZoneNode node;
+        node.t      = {{i * h, j * h}};
+        node.weight = h * h;
+        node.l1     = 1.;
+        node.status = 1;
+        flat.push_back(node);
+      }
+  const ContactZoneShape block = contact_zone_shape(flat, 2, band);
+  CHECK(block.mirrored == 0);
+  CHECK(block.centre[0] == Approx(0.25));
+  CHECK(block.centre[1] == Approx(0.1));
+  CHECK(block.width.nodes == Approx(0.5 * (0.25 + 0.1)));
+  CHECK(block.area == Approx(55 * h * h));
+}
+
+TEST_CASE("Contact zone shape in 2D: the half-width of a whole line, and of a "
+          "line cut at the first contact",
+          "[functions]")
+{
+  const double          a = 0.33, h = 0.05;
+  std::vector<ZoneNode> line, half;
+  for (int i = -20; i <= 20; ++i)
+    {
+      ZoneNode node;
+      node.t      = {{i * h, 0.}};
+      node.weight = h;
+      node.gap0   = 0.5 * node.t[0] * node.t[0];
+      node.l1 = std::sqrt(std::max(1. - node.t[0] * node.t[0] / (a * a), 0.));
+      node.status = node.l1 > 0. ? 1 : 0;
+      line.push_back(node);
+      if (i >= 0)
+        half.push_back(node);
+    }
+  std::vector<std::pair<double, double>> pressures;
+  for (const ZoneNode &node : line)
+    pressures.emplace_back(node.t[0], node.l1);
+  const ContactZoneWidth width = contact_zone_half_width(pressures);
+  const ContactZoneShape shape = contact_zone_shape(line, 1, 0.25 * h);
+  CHECK(shape.mirrored == 0);
+  CHECK(shape.width.nodes == width.nodes);
+  CHECK(shape.width.extrapolated == width.extrapolated);
+  const ContactZoneShape cut = contact_zone_shape(half, 1, 0.25 * h);
+  CHECK(cut.mirrored == 1);
+  CHECK(cut.width.nodes == Approx(width.nodes));
+  CHECK(cut.width.extrapolated == Approx(width.extrapolated));
+  // no active node: all zero
+  for (ZoneNode &node : line)
+    node.l1 = 0.;
+  CHECK(contact_zone_shape(line, 1, 0.25 * h).width.nodes == 0.);
+  CHECK(contact_zone_shape(line, 1, 0.25 * h).area == 0.);
 }
 
 TEST_CASE("Equilibrium check: loads that only the contact could hold",
