@@ -393,7 +393,7 @@ figures: \`cd doc/$figures_rel && gnuplot work_precision.gp\`.
 
 EOF
   if [ "$have_gnuplot" = 1 ]; then
-    cat <<'EOF'
+    cat <<EOF
 Pressure error against the cumulative wall time (solid, filled: nested; dashed, open: cold):
 
 ![pressure error vs time]($figures_rel/pressure_error_vs_time.svg)

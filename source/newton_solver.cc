@@ -10,6 +10,7 @@
 #include <dualcontact/newton_solver.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace dualcontact
@@ -28,6 +29,16 @@ namespace dualcontact
       if (z < 0.)
         return 0;
       return (!friction || y.norm() < g) ? 1 : 2;
+    }
+
+    // seconds since `start` on this rank's clock, and restart it
+    double
+    lap(std::chrono::steady_clock::time_point &start)
+    {
+      const auto   now = std::chrono::steady_clock::now();
+      const double t   = std::chrono::duration<double>(now - start).count();
+      start            = now;
+      return t;
     }
   } // namespace
 
@@ -328,6 +339,7 @@ namespace dualcontact
     for (unsigned int j = 0;; ++j)
       {
         Timer timer(comm, true);
+        auto  clock = std::chrono::steady_clock::now();
         contact.augmented_state(v, system->r, z, y);
         compute_gradient(contact, v, smooth_gradient, gradient);
 
@@ -382,6 +394,7 @@ namespace dualcontact
             " |b|; accepted, and the later Uzawa steps of this solve stop "
             "there at once");
         roundoff_reported |= at_floor;
+        statistics.times.gradient += lap(clock);
         if (gradient_norm <= target || at_floor)
           {
             timer.stop();
@@ -414,7 +427,9 @@ namespace dualcontact
         // The Newton direction: H d = -grad, by CG with AMG, solved only as
         // accurately as the target needs (inexact Newton).
         assemble_newton_matrix(contact);
+        statistics.times.newton_matrix += lap(clock);
         record.amg_setups = update_preconditioner(status, record.n_active);
+        statistics.times.amg_setup += lap(clock);
         const double forcing =
           std::min(0.1, std::max(1e-12, 0.5 * target / gradient_norm));
         newton_rhs.equ(-1., gradient);
@@ -439,9 +454,11 @@ namespace dualcontact
                                       3 * cg_iterations_after_setup + 30);
             record.cg_iterations = iterations;
             solved               = converged;
+            statistics.times.cg += lap(clock);
             if (!solved)
               {
                 linear_solver.initialize(newton_matrix);
+                statistics.times.amg_setup += lap(clock);
                 amg_status        = status;
                 amg_valid         = true;
                 record.amg_setups = 1;
@@ -456,6 +473,7 @@ namespace dualcontact
                                                    forcing);
             record.cg_iterations += final_iterations;
           }
+        statistics.times.cg += lap(clock);
         last_cg_iterations = final_iterations;
         if (record.amg_setups > 0)
           cg_iterations_after_setup = final_iterations;
@@ -465,6 +483,7 @@ namespace dualcontact
         v.add(alpha, direction);
         record.step_length = alpha;
         previous_alpha     = alpha;
+        statistics.times.gradient += lap(clock);
 
         timer.stop();
         record.time = timer.wall_time();

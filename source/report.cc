@@ -51,9 +51,21 @@ namespace dualcontact
       }
   }
 
+  SolveTimes &
+  SolveTimes::operator+=(const SolveTimes &other)
+  {
+    newton_matrix += other.newton_matrix;
+    amg_setup += other.amg_setup;
+    cg += other.cg;
+    gradient += other.gradient;
+    multipliers += other.multipliers;
+    return *this;
+  }
+
   void
   ContactStatistics::add(const ContactStatistics &part)
   {
+    times += part.times;
     threshold_steps += part.threshold_steps;
     uzawa_steps += part.uzawa_steps;
     newton_steps += part.newton_steps;
@@ -736,6 +748,19 @@ namespace dualcontact
                      " nodes in contact" + seconds(r.time.solve)},
                   ", ",
                   indent);
+    if (parameters.output.print_timing)
+      {
+        const SolveTimes &t = solve.times;
+        pcout << wrap(
+          "   where the solve's time went: ",
+          {"Newton matrices " + significant(t.newton_matrix, 3) + " s",
+           "AMG set-ups " + significant(t.amg_setup, 3) + " s",
+           "CG " + significant(t.cg, 3) + " s",
+           "gradients and line searches " + significant(t.gradient, 3) + " s",
+           "multiplier updates " + significant(t.multipliers, 3) + " s"},
+          ", ",
+          indent);
+      }
     std::vector<std::string> zone_items = {
       "total contact force " + significant(zone.contact_force) +
         " (applied load toward the obstacle " + significant(solve.normal_load) +
@@ -928,6 +953,11 @@ namespace dualcontact
     t.add_value("time_solve", r.time.solve);
     t.add_value("time_output", r.time.output);
     t.add_value("time_total", r.time.total);
+    t.add_value("time_newton_matrix", r.solve.times.newton_matrix);
+    t.add_value("time_amg_setup", r.solve.times.amg_setup);
+    t.add_value("time_cg", r.solve.times.cg);
+    t.add_value("time_gradient", r.solve.times.gradient);
+    t.add_value("time_multipliers", r.solve.times.multipliers);
     t.add_value("time_reference", r.solve.time_reference);
     t.add_value("reference_iterations", r.solve.reference_iterations);
     t.add_value("memory_mb", r.memory_mb);

@@ -7,6 +7,7 @@
 #include <dualcontact/uzawa_iteration.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -337,8 +338,14 @@ namespace dualcontact
         v_previous = v;
         const NewtonStatistics newton_statistics =
           proximal_step(step_system, contact, v_previous, v, k, observer);
-        IterationRecord record = update_multipliers(
+        const auto      update_start = std::chrono::steady_clock::now();
+        IterationRecord record       = update_multipliers(
           step_system, contact, v_previous, v, update_threshold);
+        statistics.times += newton_statistics.times;
+        statistics.times.multipliers +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                        update_start)
+            .count();
         timer.stop();
         record.uzawa_step    = k;
         record.newton_steps  = newton_statistics.newton_steps;

@@ -94,6 +94,22 @@ namespace dualcontact
     double                  time    = 0.; // wall time of the step [s]
   };
 
+  /**
+   * Where the wall time of a contact solve goes [s], summed over its steps
+   * (rank 0's clock: the ranks meet at every reduction).
+   */
+  struct SolveTimes
+  {
+    double newton_matrix = 0.; // H = K + chi M + the contact terms
+    double amg_setup     = 0.; // AMG hierarchies built
+    double cg            = 0.; // CG iterations
+    double gradient      = 0.; // gradients, statuses, line searches
+    double multipliers   = 0.; // multiplier updates and stopping tests
+
+    SolveTimes &
+    operator+=(const SolveTimes &other);
+  };
+
   /** Totals of a contact solve (all three loops). */
   struct ContactStatistics
   {
@@ -116,7 +132,8 @@ namespace dualcontact
     double chi_scale = 1.;
     // the Uzawa iteration stopped at the round-off floor of its inner
     // solves rather than at its tolerance (doc/theory.md §6)
-    bool at_roundoff_floor = false;
+    bool       at_roundoff_floor = false;
+    SolveTimes times;
 
     /** Add the counts of `part`, a later solve; keep its final state. */
     void

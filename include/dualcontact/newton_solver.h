@@ -27,6 +27,7 @@ namespace dualcontact
     unsigned int newton_steps  = 0;
     unsigned int cg_iterations = 0;
     unsigned int amg_setups    = 0;
+    SolveTimes   times; // all but `multipliers`
   };
 
   template <int dim>

@@ -58,11 +58,11 @@ namespace
     std::vector<Node> nodes;
     for (const auto &part : Utilities::MPI::all_gather(run.comm, local))
       for (std::size_t i = 0; i + 10 < part.size() + 1; i += 10)
-        nodes.push_back({{part[i], part[i + 1], part[i + 2]},
+        nodes.push_back({{{part[i], part[i + 1], part[i + 2]}},
                          part[i + 3],
                          part[i + 4],
                          part[i + 5],
-                         {part[i + 6], part[i + 7], part[i + 8]},
+                         {{part[i + 6], part[i + 7], part[i + 8]}},
                          static_cast<unsigned int>(part[i + 9])});
     return nodes;
   }

@@ -148,8 +148,9 @@ TEST_CASE("Hertz with friction: odd tangential traction, stick zone at the "
   std::vector<std::array<double, 3>> local;
   for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
     if (c.l1[s] > 0.)
-      local.push_back(
-        {c.nodes[s].position[0], c.l2[s][0], static_cast<double>(c.status(s))});
+      local.push_back({{c.nodes[s].position[0],
+                        c.l2[s][0],
+                        static_cast<double>(c.status(s))}});
   std::vector<std::array<double, 3>> nodes;
   for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, local))
     nodes.insert(nodes.end(), part.begin(), part.end());
@@ -169,7 +170,7 @@ TEST_CASE("Hertz with friction: odd tangential traction, stick zone at the "
       const auto mirror =
         std::lower_bound(nodes.begin(),
                          nodes.end(),
-                         std::array<double, 3>{-x - 1e-9, -1e300, 0.});
+                         std::array<double, 3>{{-x - 1e-9, -1e300, 0.}});
       REQUIRE(mirror != nodes.end());
       REQUIRE(std::abs((*mirror)[0] + x) < 1e-9);
       oddness = std::max(oddness, std::abs(l2 + (*mirror)[1]));
