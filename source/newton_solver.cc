@@ -171,12 +171,21 @@ namespace dualcontact
     n_changed      = Utilities::MPI::sum(n_changed, comm);
     n_active_built = Utilities::MPI::sum(n_active_built, comm);
     // ... or when the last CG solve needed clearly more iterations than the
-    // first one after the set-up (a set-up costs about 20 of them).
+    // first one after the set-up (a set-up costs about 20 of them), unless
+    // the matrix is the one the hierarchy was built for (the same statuses
+    // and no slipping node, whose term depends on v): a rebuild would give
+    // the same hierarchy (doc/performance.md).
+    types::global_dof_index n_slipping = 0;
+    for (const unsigned char s : status)
+      n_slipping += (s == 2);
+    const bool same_matrix =
+      amg_valid && n_changed == 0 && Utilities::MPI::sum(n_slipping, comm) == 0;
     const bool rebuild =
       !amg_valid || parameters.amg_rebuild_fraction == 0. ||
       n_changed >
         parameters.amg_rebuild_fraction * std::max(n_active_built, n_active) ||
-      last_cg_iterations > 1.5 * cg_iterations_after_setup + 10;
+      (!same_matrix &&
+       last_cg_iterations > 1.5 * cg_iterations_after_setup + 10);
     if (rebuild)
       {
         linear_solver.initialize(newton_matrix);
