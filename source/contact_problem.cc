@@ -186,10 +186,7 @@ namespace dualcontact
                          dsp,
                          mpi_communicator);
     if (scene.effects().contact)
-      mass_matrix.reinit(locally_owned_dofs,
-                         locally_owned_dofs,
-                         dsp,
-                         mpi_communicator);
+      mass.diagonal.reinit(locally_owned_dofs, mpi_communicator);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
@@ -261,7 +258,7 @@ namespace dualcontact
                         constraints,
                         system_matrix,
                         system_rhs,
-                        contact ? &mass_matrix : nullptr,
+                        contact ? &mass : nullptr,
                         &applied_load);
     // An expression may evaluate to NaN or infinity somewhere (sqrt of a
     // negative number, log of zero): stop here, naming the suspects, rather
@@ -282,7 +279,7 @@ namespace dualcontact
         // (doc/theory.md §5).
         chi = parameters.solver.proximal * parameters.material.youngs_modulus /
               std::pow(scene.characteristic_length(), 2);
-        system_matrix.add(chi, mass_matrix);
+        mass.add_to(system_matrix, chi);
       }
     // the rigid-body modes of this mesh, for the algebraic multigrid
     elastic_solver.set_near_null_space(mapping,
@@ -450,7 +447,7 @@ namespace dualcontact
         if (rotation > 1e-12)
           {
             TrilinosWrappers::MPI::Vector rhs(w);
-            mass_matrix.vmult(rhs, w);
+            mass.vmult(rhs, w);
             rhs *= chi;
             // (a direction is what is wanted, not a solution: 1e-2 is
             // enough, 10-20 CG iterations in the 3D half ball)
@@ -470,10 +467,10 @@ namespace dualcontact
 
   template <int dim>
   ContactSystem
-  ContactProblem<dim>::contact_system() const
+  ContactProblem<dim>::contact_system()
   {
     ContactSystem system{
-      system_matrix, mass_matrix, system_rhs, homogeneous_constraints, r, chi};
+      system_matrix, mass, system_rhs, homogeneous_constraints, r, chi};
     system.free_motions = &free_motions;
     return system;
   }
@@ -695,7 +692,7 @@ namespace dualcontact
       homogeneous_constraints.set_zero(e);
       TrilinosWrappers::MPI::Vector Ke(e), Me(e);
       system_matrix.vmult(Ke, e);
-      mass_matrix.vmult(Me, e);
+      mass.vmult(Me, e);
       return std::sqrt(std::max(e * Ke - chi * (e * Me), 0.));
     };
     TrilinosWrappers::MPI::Vector difference(locally_owned_dofs,

@@ -24,7 +24,8 @@ namespace dualcontact
     /**
      * The cell terms of linear elasticity: the stiffness of a(u, v) =
      * int sigma(u):eps(v), the load int f.v + int_{Gamma_N} T.v (only the
-     * loads the scene has) and, if asked, the mass matrix int u.v.
+     * loads the scene has) and, if asked, the lumped mass int phi_i (the
+     * row sums of the mass matrix int u.v).
      */
     template <int dim>
     class CellAssembler
@@ -50,7 +51,7 @@ namespace dualcontact
                            update_values | update_quadrature_points |
                              update_JxW_values)
           , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
-          , mass(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+          , mass(fe.n_dofs_per_cell())
           , rhs(fe.n_dofs_per_cell())
           , eps(fe.n_dofs_per_cell())
           , div(fe.n_dofs_per_cell())
@@ -97,12 +98,10 @@ namespace dualcontact
                   matrix(i, j) +=
                     (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
                     JxW;
+                // the row sum of int u.v: the shape functions of a
+                // component sum to one
                 if (with_mass)
-                  for (unsigned int j = 0; j <= i; ++j)
-                    if (fe.system_to_component_index(i).first ==
-                        fe.system_to_component_index(j).first)
-                      mass(i, j) += fe_values.shape_value(i, q) *
-                                    fe_values.shape_value(j, q) * JxW;
+                  mass(i) += fe_values.shape_value(i, q) * JxW;
                 if (body_force != nullptr)
                   rhs(i) +=
                     load_values[q](fe.system_to_component_index(i).first) *
@@ -111,10 +110,7 @@ namespace dualcontact
           }
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = i + 1; j < n_dofs; ++j)
-            {
-              matrix(i, j) = matrix(j, i);
-              mass(i, j)   = mass(j, i);
-            }
+            matrix(i, j) = matrix(j, i);
 
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() && traction_ids.count(face->boundary_id()))
@@ -141,8 +137,8 @@ namespace dualcontact
       const QGauss<dim - 1>     face_quadrature;
       FEValues<dim>             fe_values;
       FEFaceValues<dim>         fe_face_values;
-      FullMatrix<double>        matrix, mass;
-      Vector<double>            rhs;
+      FullMatrix<double>        matrix;
+      Vector<double>            mass, rhs;
 
     private:
       std::vector<SymmetricTensor<2, dim>> eps;
@@ -160,7 +156,7 @@ namespace dualcontact
                       const AffineConstraints<double> &constraints,
                       TrilinosWrappers::SparseMatrix  &system_matrix,
                       TrilinosWrappers::MPI::Vector   &system_rhs,
-                      TrilinosWrappers::SparseMatrix  *mass_matrix,
+                      LumpedMass                      *mass,
                       std::array<double, 3>           *applied_load)
   {
     CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
@@ -168,30 +164,51 @@ namespace dualcontact
       dof_handler.get_fe().n_dofs_per_cell());
     system_matrix = 0;
     system_rhs    = 0;
-    if (mass_matrix != nullptr)
-      *mass_matrix = 0;
+    if (mass != nullptr)
+      mass->diagonal = 0;
     std::array<double, 3> load{};
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          local.assemble(cell, mass_matrix != nullptr);
+          local.assemble(cell, mass != nullptr);
           local.add_resultant(load);
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(
             local.matrix, local.rhs, dof_indices, system_matrix, system_rhs);
-          if (mass_matrix != nullptr)
+          // (the vector alone: constraints act as homogeneous ones, so a
+          // constrained DoF gets nothing and a hanging node's share goes to
+          // its masters)
+          if (mass != nullptr)
             constraints.distribute_local_to_global(local.mass,
                                                    dof_indices,
-                                                   *mass_matrix);
+                                                   mass->diagonal);
         }
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
-    if (mass_matrix != nullptr)
-      mass_matrix->compress(VectorOperation::add);
+    if (mass != nullptr)
+      mass->diagonal.compress(VectorOperation::add);
     if (applied_load != nullptr)
       for (unsigned int c = 0; c < 3; ++c)
         (*applied_load)[c] = Utilities::MPI::sum(
           load[c], dof_handler.get_triangulation().get_communicator());
+  }
+
+  void
+  LumpedMass::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    dst = src;
+    dst.scale(diagonal);
+  }
+
+  void
+  LumpedMass::add_to(TrilinosWrappers::SparseMatrix &matrix,
+                     const double                    factor) const
+  {
+    for (const types::global_dof_index i : diagonal.locally_owned_elements())
+      if (diagonal[i] != 0.)
+        matrix.add(i, i, factor * diagonal[i]);
+    matrix.compress(VectorOperation::add);
   }
 
   template <int dim>
@@ -365,7 +382,10 @@ namespace dualcontact
     data.elliptic              = true;
     data.higher_order_elements = higher_order;
     data.smoother_sweeps       = 2;
-    data.aggregation_threshold = 0.02;
+    // No connection is dropped when aggregating: with 0.02 the Hertz meshes
+    // took 118 instead of 46 CG iterations at 1.2e6 DoFs, and more memory
+    // (doc/performance.md).
+    data.aggregation_threshold = 0.;
 
     // deal.II 9.4 only hands ML the translations; give it the rotations too
     // through ML's own "null space" parameters ("null space: type" =
@@ -376,6 +396,15 @@ namespace dualcontact
     list.set("null space: type", "pre-computed");
     list.set("null space: dimension", modes->NumVectors());
     list.set("null space: vectors", modes->Values());
+
+    // The dim DoFs of a node are consecutive in deal.II's numbering of
+    // FESystem(FE_Q, dim): ML aggregates nodes, not single DoFs, as it
+    // should for elasticity (otherwise an aggregate may hold the x DoF of a
+    // node and not its y DoF). On the Hertz meshes it takes a quarter fewer
+    // CG iterations (118 against 154 at 1.2e6 DoFs, doc/performance.md).
+    AssertThrow(matrix.local_size() % dim == 0,
+                ExcMessage("The AMG needs whole nodes on each rank."));
+    list.set("PDE equations", dim);
 
     preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     preconditioner->initialize(matrix, list);
@@ -480,7 +509,7 @@ namespace dualcontact
                                          const AffineConstraints<double> &, \
                                          TrilinosWrappers::SparseMatrix &,  \
                                          TrilinosWrappers::MPI::Vector &,   \
-                                         TrilinosWrappers::SparseMatrix *,  \
+                                         LumpedMass *,                      \
                                          std::array<double, 3> *);          \
   template ReactionFigures compute_reactions<dim>(                                     \
     const Mapping<dim> &,                                                              \

@@ -197,7 +197,7 @@ namespace dualcontact
 
     /** The contact problem's system, after prepare_contact_solve(). */
     ContactSystem
-    contact_system() const;
+    contact_system();
 
     /**
      * A first guess for the contact solve: the carried displacement or zero,
@@ -292,8 +292,8 @@ namespace dualcontact
     // linear algebra
     TrilinosWrappers::SparseMatrix system_matrix; // K = A (+ chi M)
     TrilinosWrappers::MPI::Vector  system_rhs;
-    TrilinosWrappers::SparseMatrix mass_matrix; // only with contact
-    TrilinosWrappers::MPI::Vector  solution;    // ghosted
+    LumpedMass                     mass;     // only with contact
+    TrilinosWrappers::MPI::Vector  solution; // ghosted
     ElasticSolver<dim>             elastic_solver;
 
     // contact: the nodes and multipliers, the constants r and chi, and the

@@ -11,6 +11,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dualcontact/lumped_mass.h>
+
 #include <string>
 #include <vector>
 
@@ -20,19 +22,25 @@ namespace dualcontact
 
   /**
    * The discrete problem one contact solve works on, all condensed with the
-   * constraints: K = A + chi M, the mass matrix M, the load b, and r, chi
-   * (doc/theory.md §3, §5). The proximal weight of a step may be lowered
-   * below the chi that K holds (doc/theory.md §3.2): it is chi_scale chi,
-   * and the Newton iteration adds (chi_scale - 1) chi M where it needs it.
+   * constraints: K = A + chi M, the lumped mass matrix M, the load b, and
+   * r, chi (doc/theory.md §3, §5). The proximal weight of a step may be
+   * lowered below the chi that K holds (doc/theory.md §3.2): it is
+   * chi_scale chi, and the Newton iteration adds (chi_scale - 1) chi M where
+   * it needs it.
+   *
+   * K is not const: the Newton iteration adds its contact terms to K for
+   * each linear solve, and takes them off again before anything else reads
+   * it (no second matrix; doc/performance.md). Outside a Newton step K is
+   * always A + chi M.
    */
   struct ContactSystem
   {
-    const TrilinosWrappers::SparseMatrix &stiffness; // K = A + chi M
-    const TrilinosWrappers::SparseMatrix &mass;      // M
-    const TrilinosWrappers::MPI::Vector  &load;      // b
-    const AffineConstraints<double>      &homogeneous_constraints;
-    double                                r;   // augmentation [stress/length]
-    double                                chi; // proximal [stress/length^2]
+    TrilinosWrappers::SparseMatrix      &stiffness; // K = A + chi M
+    const LumpedMass                    &mass;      // M
+    const TrilinosWrappers::MPI::Vector &load;      // b
+    const AffineConstraints<double>     &homogeneous_constraints;
+    double                               r;   // augmentation [stress/length]
+    double                               chi; // proximal [stress/length^2]
     double chi_scale = 1.; // the step's proximal weight is chi_scale chi
     // The rigid motions that nothing holds (neither the prescribed
     // displacements nor the contact), orthonormal, condensed: the problem

@@ -1,6 +1,6 @@
 // Linear elasticity: assembly of the stiffness matrix A, the load vector b
-// and the L2 mass matrix M, and the CG + algebraic-multigrid solver whose
-// near-null space holds all rigid-body modes.
+// and the lumped L2 mass matrix M, and the CG + algebraic-multigrid solver
+// whose near-null space holds all rigid-body modes.
 #ifndef dualcontact_elasticity_h
 #define dualcontact_elasticity_h
 
@@ -16,6 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <dualcontact/figures.h>
+#include <dualcontact/lumped_mass.h>
 #include <dualcontact/scene.h>
 
 #include <Epetra_MultiVector.h>
@@ -32,8 +33,9 @@ namespace dualcontact
    * load vector b = int f.v + int_{Gamma_N} T.v, with the constraints
    * (hanging nodes, Dirichlet, sliders) applied. Loads the scene does not
    * have are not assembled. The matrix must already have its sparsity pattern.
-   * If `mass_matrix` is given, the L2 mass matrix M (int u.v) is assembled
-   * into it in the same pass, with the same constraints. If `applied_load`
+   * If `mass` is given, the lumped mass matrix is assembled into it in the
+   * same pass, with the same constraints (its vector must have the locally
+   * owned DoFs). If `applied_load`
    * is given, it gets the resultant of the applied loads (int f + int T,
    * summed over the ranks), without the lifting of prescribed
    * displacements that b holds.
@@ -46,7 +48,7 @@ namespace dualcontact
                       const AffineConstraints<double> &constraints,
                       TrilinosWrappers::SparseMatrix  &system_matrix,
                       TrilinosWrappers::MPI::Vector   &system_rhs,
-                      TrilinosWrappers::SparseMatrix  *mass_matrix  = nullptr,
+                      LumpedMass                      *mass         = nullptr,
                       std::array<double, 3>           *applied_load = nullptr);
 
   /**

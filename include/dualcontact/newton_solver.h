@@ -89,12 +89,20 @@ namespace dualcontact
                      TrilinosWrappers::MPI::Vector       &gradient) const;
 
     /**
-     * H = K + sum_{z_s >= 0} m_s r n n^T + sum_s m_s r T D(y_s) T^T,
-     * condensed, with T the tangent basis and D the derivative of the
-     * projection onto the disc of radius g (I when sticking).
+     * Turn K into the Newton matrix, in place:
+     * H = K + sum_{z_s >= 0} m_s r n n^T + sum_s m_s r T D(y_s) T^T
+     * (+ (chi_scale - 1) chi M), condensed, with T the tangent basis and D
+     * the derivative of the projection onto the disc of radius g (I when
+     * sticking). The entries added are kept for remove_contact_terms().
+     * Without a second matrix the Newton solve needs the memory of one
+     * (doc/performance.md); the terms touch only the rows of contact nodes.
      */
     void
-    assemble_newton_matrix(const ContactSet<dim> &contact);
+    add_contact_terms(const ContactSet<dim> &contact);
+
+    /** Take off what add_contact_terms() added: K = A + chi M again. */
+    void
+    remove_contact_terms();
 
     /**
      * Build the AMG hierarchy for the Newton matrix only when the node
@@ -120,13 +128,20 @@ namespace dualcontact
     std::vector<double>             z;   // l1 + r (v_n - g0) per node
     std::vector<Tensor<1, dim - 1>> y;   // l2 + r v_t per node
 
-    // the Newton matrix, and the statuses it had when its AMG
-    // preconditioner was last built
-    TrilinosWrappers::SparseMatrix newton_matrix;
-    std::vector<unsigned char>     amg_status;
-    bool                           amg_valid                 = false;
-    unsigned int                   cg_iterations_after_setup = 0;
-    unsigned int                   last_cg_iterations        = 0;
+    // the entries add_contact_terms() added to K, and the multiple of M
+    struct ContactEntry
+    {
+      types::global_dof_index row, column;
+      double                  value;
+    };
+    std::vector<ContactEntry> contact_terms;
+    double                    proximal_added = 0.;
+    // the statuses the Newton matrix had when its AMG preconditioner was
+    // last built
+    std::vector<unsigned char> amg_status;
+    bool                       amg_valid                 = false;
+    unsigned int               cg_iterations_after_setup = 0;
+    unsigned int               last_cg_iterations        = 0;
     // the round-off floor of the gradient found since reset(), over |b|,
     // and whether it was reported
     double roundoff_floor    = 0.;
