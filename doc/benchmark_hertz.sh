@@ -290,6 +290,11 @@ EOF
       exponent = (n > 0 && previous_contact > 0 && contact > 0 && $c["dofs"] > previous_dofs) ? \
         sprintf("%.2f", log(contact / previous_contact) / log($c["dofs"] / previous_dofs)) : "-"
       previous_contact = contact; previous_dofs = $c["dofs"]
+      # first and last mesh (memory added per DoF), and the first mesh from
+      # 2.5e5 DoFs on (growth exponent over the large meshes)
+      if (n == 0) { first_dofs = $c["dofs"]; first_mb = $c["memory_mb"] }
+      last_dofs = $c["dofs"]; last_mb = $c["memory_mb"]; last_contact = contact
+      if ($c["dofs"] >= 2.5e5 && big_dofs == 0) { big_dofs = $c["dofs"]; big_contact = contact }
       rows[++n] = sprintf("| %d | %s | %d | %d | %d | %d | %d | %d | %d | %.0f | %.0f | %.3f | %.3f | %s | %s | %s | %s |",
         $c["dofs"], ($c["warm_start"] == 1) ? "nested" : "cold", $c["contact_nodes"], $c["active_nodes"], $c["threshold_steps"], $c["uzawa_steps"],
         $c["newton_steps"], $c["linear_iterations"], $c["amg_setups"],
@@ -307,6 +312,13 @@ EOF
       print "| DoFs | start | contact nodes | active | threshold steps | Uzawa | Newton | CG | AMG set-ups | memory [MB] | KB per DoF | contact [s] | linear [s] | ratio | ratio, all meshes | exponent | pressure error |"
       print "|---:|:---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
       for (i = 1; i <= n; ++i) print rows[i]
+      print ""
+      if (last_dofs > first_dofs)
+        printf "Memory per DoF added from the first to the last mesh: **%.2f KB** ((%.0f - %.0f) MB over %d DoFs).\n", \
+          1024 * (last_mb - first_mb) / (last_dofs - first_dofs), last_mb, first_mb, last_dofs - first_dofs
+      if (big_dofs > 0 && last_dofs > big_dofs && big_contact > 0)
+        printf "Growth of the contact time from %d to %d DoFs: **N^%.2f**.\n", big_dofs, last_dofs, \
+          log(last_contact / big_contact) / log(last_dofs / big_dofs)
       print ""
       if (big == 0)
         print "**Target \"ratio <= " target " at >= 2.5e5 DoFs\": not judged**: no cycle reached 2.5e5 DoFs."
