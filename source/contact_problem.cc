@@ -336,10 +336,20 @@ namespace dualcontact
     // lambda + 2 mu rather than E, because it follows the stiffness of a
     // nearly incompressible (locked) material, for which r_rel E / h_C is
     // far too small (doc/theory.md §5).
-    r = parameters.solver.augmentation *
-        (parameters.material.lambda() + 2. * parameters.material.mu()) /
-        contact_set.min_face_diameter();
+    // The friction terms have their own r_t, scaled alike: by default r in
+    // 2D and r / 4 in 3D, where friction terms as large as r make the Newton
+    // matrices hard (doc/theory.md §5).
+    const double r_t_rel =
+      parameters.solver.tangential_augmentation > 0. ?
+        parameters.solver.tangential_augmentation :
+        (dim == 2 ? 1. : 0.25) * parameters.solver.augmentation;
+    const double modulus =
+      parameters.material.lambda() + 2. * parameters.material.mu();
+    const double h_C          = contact_set.min_face_diameter();
+    r                         = parameters.solver.augmentation * modulus / h_C;
+    r_t                       = r_t_rel * modulus / h_C;
     figures.r                 = r;
+    figures.r_t               = contact_set.friction ? r_t : 0.;
     figures.chi               = chi;
     figures.n_contact_nodes   = contact_set.n_global_nodes();
     figures.n_hanging_contact = contact_set.n_hanging_nodes();
@@ -470,7 +480,7 @@ namespace dualcontact
   ContactProblem<dim>::contact_system()
   {
     ContactSystem system{
-      system_matrix, mass, system_rhs, homogeneous_constraints, r, chi};
+      system_matrix, mass, system_rhs, homogeneous_constraints, r, r_t, chi};
     system.free_motions = &free_motions;
     return system;
   }

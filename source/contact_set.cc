@@ -227,6 +227,7 @@ namespace dualcontact
   void
   ContactSet<dim>::augmented_state(const TrilinosWrappers::MPI::Vector &v,
                                    const double                         r,
+                                   const double                         r_t,
                                    std::vector<double>                 &z,
                                    std::vector<Tensor<1, dim - 1>>     &y) const
   {
@@ -236,7 +237,7 @@ namespace dualcontact
       {
         z[s] = l1[s] + r * (normal_displacement(v, s) - nodes[s].gap0);
         if (friction)
-          y[s] = l2[s] + r * tangential_displacement(v, s);
+          y[s] = l2[s] + r_t * tangential_displacement(v, s);
       }
   }
 

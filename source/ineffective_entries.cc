@@ -108,6 +108,11 @@ namespace dualcontact
        {"Threshold"},
        "the law " + quoted(friction.law) +
          " takes <Friction/Coefficient> (the threshold is for 'given')"},
+      {contact && law_entry.empty(),
+       "Solver",
+       {"Tangential augmentation parameter"},
+       "<Friction/Law> is " + quoted(friction.law) +
+         " (frictionless): there are no friction terms"},
       {!law->depends_on_pressure(),
        "Friction",
        threshold_iteration,
@@ -117,6 +122,7 @@ namespace dualcontact
       {!contact,
        "Solver",
        {"Augmentation parameter",
+        "Tangential augmentation parameter",
         "Proximal parameter",
         "Uzawa tolerance",
         "Maximum Uzawa steps",

@@ -122,8 +122,9 @@ namespace dualcontact
       rows;
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
-        const double          m_r = contact.nodes[s].weight * system->r;
-        const Tensor<1, dim> &n   = contact.nodes[s].normal;
+        const double          m_r  = contact.nodes[s].weight * system->r;
+        const double          m_rt = contact.nodes[s].weight * system->r_t;
+        const Tensor<1, dim> &n    = contact.nodes[s].normal;
         const std::array<Tensor<1, dim>, dim - 1> &t =
           contact.nodes[s].tangents;
         local_matrix = 0;
@@ -145,7 +146,7 @@ namespace dualcontact
                 projection_derivative(y[s], contact.threshold[s], eb);
               for (unsigned int a = 0; a < dim; ++a)
                 for (unsigned int k = 0; k < dim - 1; ++k)
-                  local_matrix(a, b) += m_r * t[k][a] * Deb[k];
+                  local_matrix(a, b) += m_rt * t[k][a] * Deb[k];
             }
         if (local_matrix.frobenius_norm() == 0.)
           continue;
@@ -256,6 +257,7 @@ namespace dualcontact
     // that meets many new contact nodes go as far as it should).
     const MPI_Comm                  comm = rhs.get_mpi_communicator();
     const double                    r    = system->r;
+    const double                    r_t  = system->r_t;
     const unsigned int              n    = contact.n_local_nodes();
     std::vector<double>             dn(n);
     std::vector<Tensor<1, dim - 1>> dt(n);
@@ -289,10 +291,10 @@ namespace dualcontact
             }
           if (contact.friction)
             {
-              const Tensor<1, dim - 1> ys = y[s] + alpha * r * dt[s];
+              const Tensor<1, dim - 1> ys = y[s] + alpha * r_t * dt[s];
               const double             g  = contact.threshold[s];
               local[0] += m * (project_onto_disc(ys, g) * dt[s]);
-              local[1] += m * r * huber_curvature(ys, g, dt[s]);
+              local[1] += m * r_t * huber_curvature(ys, g, dt[s]);
             }
         }
       double global[2];
@@ -312,8 +314,8 @@ namespace dualcontact
                    (std::pow(positive_part(z[s] + r * dn[s]), 2) -
                     std::pow(positive_part(z[s]), 2));
           if (contact.friction)
-            local += m / r *
-                     (huber(Tensor<1, dim - 1>(y[s] + r * dt[s]),
+            local += m / r_t *
+                     (huber(Tensor<1, dim - 1>(y[s] + r_t * dt[s]),
                             contact.threshold[s]) -
                       huber(y[s], contact.threshold[s]));
         }
@@ -393,7 +395,7 @@ namespace dualcontact
       {
         Timer timer(comm, true);
         auto  clock = std::chrono::steady_clock::now();
-        contact.augmented_state(v, system->r, z, y);
+        contact.augmented_state(v, system->r, system->r_t, z, y);
         compute_gradient(contact, v, smooth_gradient, gradient);
 
         IterationRecord record;
@@ -566,7 +568,7 @@ namespace dualcontact
     unsigned int                        &iterations)
   {
     system = &system_;
-    contact.augmented_state(v, system->r, z, y);
+    contact.augmented_state(v, system->r, system->r_t, z, y);
     add_contact_terms(contact);
 
     Timer timer(v.get_mpi_communicator(), true);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -811,6 +812,19 @@ namespace dualcontact
       "Any r > 0 converges; larger r means fewer Uzawa steps and harder "
       "Newton problems.");
     prm.declare_entry(
+      "Tangential augmentation parameter",
+      "auto",
+      Patterns::Anything(),
+      "r_t,rel [-]: 'auto' or a number > 0. The friction terms use their own "
+      "augmentation r_t = r_t,rel (lambda + 2 mu) / h_C [stress/length] (as "
+      "r, with r_t,rel for r_rel), in the update l2 <- proj_g(l2 + r_t v_t) "
+      "and in the Newton terms of l2. 'auto' is r_rel in 2D and r_rel / 4 in "
+      "3D: in 3D, friction terms as large as the normal ones make the "
+      "Newton matrices hard for CG and need 3-4 Newton steps per Uzawa "
+      "step (the projection onto the friction disc), and r_rel / 4 halves "
+      "the Coulomb solves; in 2D (an interval, no disc) a smaller r_t only "
+      "costs Uzawa steps (doc/theory.md §5). Ignored without friction.");
+    prm.declare_entry(
       "Proximal parameter",
       "1e-3",
       Patterns::Double(0.),
@@ -898,10 +912,27 @@ namespace dualcontact
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    linear_tolerance          = prm.get_double("Linear solver tolerance");
-    max_linear_iterations     = prm.get_integer("Maximum linear iterations");
-    amg_rotation_modes        = prm.get_bool("AMG with rotation modes");
-    augmentation              = prm.get_double("Augmentation parameter");
+    linear_tolerance      = prm.get_double("Linear solver tolerance");
+    max_linear_iterations = prm.get_integer("Maximum linear iterations");
+    amg_rotation_modes    = prm.get_bool("AMG with rotation modes");
+    augmentation          = prm.get_double("Augmentation parameter");
+    {
+      const std::string value =
+        Utilities::trim(prm.get("Tangential augmentation parameter"));
+      char *end               = nullptr;
+      tangential_augmentation = std::strtod(value.c_str(), &end);
+      const bool number       = !value.empty() && *end == '\0' &&
+                          std::isfinite(tangential_augmentation) &&
+                          tangential_augmentation > 0.;
+      if (value == "auto")
+        tangential_augmentation = 0.; // resolved per dimension
+      else if (!number)
+        throw InputError("The entry <Solver/Tangential augmentation "
+                         "parameter> must be 'auto' or a positive number, "
+                         "not '" +
+                           value + "'.",
+                         exit_invalid_value);
+    }
     proximal                  = prm.get_double("Proximal parameter");
     uzawa_tolerance           = prm.get_double("Uzawa tolerance");
     max_uzawa_steps           = prm.get_integer("Maximum Uzawa steps");

@@ -497,8 +497,9 @@ namespace dualcontact
                              "solve");
         return;
       }
-    pcout << legend_line("r, chi",
-                         "augmentation [stress/length] and proximal weight "
+    pcout << legend_line("r, r_t, chi",
+                         "normal and (with friction) tangential augmentation "
+                         "[stress/length] and proximal weight "
                          "[stress/length^2] of the modified Lagrangian");
     pcout << legend_line("Uzawa k",
                          std::string("step k of the Uzawa iteration: a "
@@ -568,7 +569,10 @@ namespace dualcontact
     if (!shows(Verbosity::normal))
       return;
     pcout << "   contact: " << solve.n_contact_nodes
-          << " nodes, r = " << solve.r << ", chi = " << solve.chi << '\n';
+          << " nodes, r = " << solve.r;
+    if (solve.r_t > 0.)
+      pcout << ", r_t = " << solve.r_t;
+    pcout << ", chi = " << solve.chi << '\n';
   }
 
   template <int dim>

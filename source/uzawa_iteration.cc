@@ -54,7 +54,7 @@ namespace dualcontact
     const MPI_Comm                  comm = v.get_mpi_communicator();
     std::vector<double>             z;
     std::vector<Tensor<1, dim - 1>> y;
-    contact.augmented_state(v, system.r, z, y);
+    contact.augmented_state(v, system.r, system.r_t, z, y);
 
     // sums: |dl1|^2, |l1|^2, |dl2|^2, |l2|^2, |dg|^2, |g|^2
     double                  sums[6] = {0, 0, 0, 0, 0, 0};

@@ -300,6 +300,7 @@ namespace dualcontact
     // three loops (doc/theory.md §3)
     ContactSet<dim> contact_set;
     double          r   = 0.;
+    double          r_t = 0.;
     double          chi = 0.;
     // the resultant of the applied loads (tractions, body force), from the
     // assembly

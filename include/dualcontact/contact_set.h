@@ -97,11 +97,14 @@ namespace dualcontact
     /**
      * At every local node the arguments of the positive part and of the
      * projection in the Uzawa updates (doc/theory.md §3.2):
-     * z_s = l1_s + r (v_n(s) - g0_s) and, with friction, y_s = l2_s + r v_t(s).
+     * z_s = l1_s + r (v_n(s) - g0_s) and, with friction,
+     * y_s = l2_s + r_t v_t(s) (r, r_t the normal and tangential
+     * augmentation, doc/theory.md §5).
      */
     void
     augmented_state(const TrilinosWrappers::MPI::Vector &v,
                     const double                         r,
+                    const double                         r_t,
                     std::vector<double>                 &z,
                     std::vector<Tensor<1, dim - 1>>     &y) const;
 

@@ -39,8 +39,9 @@ namespace dualcontact
     const LumpedMass                    &mass;      // M
     const TrilinosWrappers::MPI::Vector &load;      // b
     const AffineConstraints<double>     &homogeneous_constraints;
-    double                               r;   // augmentation [stress/length]
-    double                               chi; // proximal [stress/length^2]
+    double r;              // normal augmentation [stress/length]
+    double r_t;            // tangential augmentation [stress/length]
+    double chi;            // proximal [stress/length^2]
     double chi_scale = 1.; // the step's proximal weight is chi_scale chi
     // The rigid motions that nothing holds (neither the prescribed
     // displacements nor the contact), orthonormal, condensed: the problem

@@ -46,7 +46,8 @@ namespace dualcontact
     types::global_dof_index n_contact_nodes   = 0;
     types::global_dof_index n_hanging_contact = 0;  // on Gamma_C, all ranks
     double                  r                 = 0.; // augmentation used
-    double                  chi               = 0.; // proximal weight used
+    double                  r_t = 0.; // tangential augmentation (with friction)
+    double                  chi = 0.; // proximal weight used
     // the applied load toward the foundation (tractions and body force;
     // not the lifting of prescribed displacements)
     double normal_load = 0.;

@@ -214,7 +214,8 @@ namespace dualcontact
 
     // the Uzawa iteration on the modified Lagrangian (doc/theory.md §5):
     // r = r_rel (lambda + 2 mu) / h_C, chi = chi_rel E / L^2
-    double       augmentation    = 10.;  // r_rel
+    double       augmentation            = 10.; // r_rel
+    double       tangential_augmentation = 0.;  // r_t,rel; 0: 'auto'
     double       proximal        = 1e-3; // chi_rel: chi = chi_rel E / L^2
     double       uzawa_tolerance = 1e-8;
     unsigned int max_uzawa_steps = 500;
