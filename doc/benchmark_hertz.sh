@@ -163,6 +163,7 @@ refinement="$(prm_value 'Refinement/Strategy' global)"
 nested="$(prm_value 'Refinement/Nested iteration' true)"
 r_rel="$(prm_value 'Solver/Augmentation parameter' 10)"
 chi_rel="$(prm_value 'Solver/Proximal parameter' 1e-3)"
+rt_rel="$(prm_value 'Solver/Tangential augmentation parameter' auto)"
 # what the file says it shows: its first comment line
 title="$(awk '/^[ \t]*#/ { sub(/^[ \t]*#[ \t]*/, ""); if ($0 != "") { print; exit } }' "$repo/prm/$scene.prm")"
 title="${title%.}"
@@ -232,7 +233,7 @@ overrides below${EXTRA_PRM:+, EXTRA_PRM} and the program's defaults):
 - ${dimension}D $geometry, E = $youngs, nu = $poisson$plane, Q1 elements;
 - $friction_text;
 - $cycles cycle(s), refinement strategy \`$refinement\`; $start_text;
-- r_rel = $r_rel, chi_rel = $chi_rel${first_r:+ (on the first mesh $first_r)};
+- r_rel = $r_rel, r_t,rel = $rt_rel (friction terms; auto: r_rel in 2D, r_rel / 4 in 3D), chi_rel = $chi_rel${first_r:+ (on the first mesh $first_r)};
 - \`Output/Write vtu = false\`, \`Solver/Time a reference linear solve = true\`.
 
     $invocation
