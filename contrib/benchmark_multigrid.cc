@@ -1,0 +1,655 @@
+// benchmark_multigrid: what one linear solve of a contact scene's Newton
+// matrix costs in memory and time with the algebraic multigrid every solve
+// of dualcontact uses (ML, ElasticSolver in elasticity.h), and with a
+// geometric multigrid on the levels of the p4est mesh. It answers one
+// question of doc/performance.md: can a solve of this code fit in 1 KB per
+// DoF, and which preconditioner does that take?
+//
+//   mpirun -np 2 build/benchmark_multigrid scene.prm refinements amg|gmg
+//          [--half-width a] [--degree k] [--set "Subsection/Entry=value"]...
+//
+// The matrix is the one the contact solver's last Newton steps solve with
+// (and its "reference linear solve" times):
+//
+//   H = K + chi M + C,
+//
+// K the stiffness of linear elasticity (assembled by the library's
+// assemble_elasticity, as in the program), M the lumped mass, chi the
+// proximal weight, and C the normal contact terms r m_s n n^T of the nodes
+// on Gamma_C within the half-width a (default 0.1, Hertz's a of prm/hertz.prm
+// and prm/hertz_3d.prm) of the foundation's point, r = r_rel (lambda + 2
+// mu) / h_C as the program sets it. The right-hand side is the scene's load.
+// The mesh is the scene's initial mesh refined globally `refinements` times
+// (the meshes of the benchmark pages: prm/hertz.prm with 3 and 4 gives
+// 303362 and 1207298 DoFs).
+//
+// amg: CG with the program's ML hierarchy (the same settings and rigid-body
+//   modes), to the relative residual <Solver/Linear solver tolerance>.
+// gmg: CG with a V-cycle on the mesh levels (local smoothing: each level
+//   holds its own cells, the refinement edges are coupled by interface
+//   matrices), level matrices K_l + chi M_l + C_l assembled on the level
+//   cells, the contact terms rediscretised on each level (the same r, the
+//   level's weights m_s, the same zone), Chebyshev smoothing of the given
+//   degree (default 3) with the inverse diagonal, prolongation by the
+//   interpolation of the nested spaces, and CG with ML on the coarsest
+//   level (1e-12).
+// --set overrides an entry of the scene, as for the program (e.g. --set
+// "Material/Poisson's ratio=0.49").
+//
+// Printed: the DoFs and levels, the peak resident memory summed over the
+// ranks after assembly, after the preconditioner's set-up and after the
+// solve (and per DoF above the processes' memory at the start), the times,
+// the CG iterations, |x|; the last line, "RESULT key value ...", is what
+// doc/benchmark_multigrid.sh reads. The program checks nothing itself: the
+// test multigrid_same_solution (tests/CMakeLists.txt) compares the two.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/multigrid/mg_coarse.h>
+#include <deal.II/multigrid/mg_constrained_dofs.h>
+#include <deal.II/multigrid/mg_matrix.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/mg_tools.h>
+#include <deal.II/multigrid/mg_transfer.h>
+#include <deal.II/multigrid/multigrid.h>
+
+#include <dualcontact/elasticity.h>
+#include <dualcontact/input_error.h>
+#include <dualcontact/lumped_mass.h>
+#include <dualcontact/parameters.h>
+#include <dualcontact/scene.h>
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace dealii;
+
+namespace
+{
+  using Vector = TrilinosWrappers::MPI::Vector;
+  using Matrix = TrilinosWrappers::SparseMatrix;
+
+  /** Peak and current resident memory [MB], summed over the ranks. */
+  std::pair<double, double>
+  memory_mb()
+  {
+    Utilities::System::MemoryStats stats;
+    Utilities::System::get_memory_stats(stats);
+    return {Utilities::MPI::sum(stats.VmHWM / 1024., MPI_COMM_WORLD),
+            Utilities::MPI::sum(stats.VmRSS / 1024., MPI_COMM_WORLD)};
+  }
+
+  template <int dim>
+  class MultigridBenchmark
+  {
+  public:
+    MultigridBenchmark(const dualcontact::Parameters &parameters,
+                       unsigned int                   refinements,
+                       bool                           geometric,
+                       double                         half_width,
+                       unsigned int                   chebyshev_degree);
+
+    void
+    run();
+
+  private:
+    void
+    make_mesh_and_dofs();
+    void
+    assemble_system();
+    void
+    setup_algebraic();
+    void
+    setup_geometric();
+    unsigned int
+    solve(Vector &x);
+
+    /** K + chi M of one cell (level or active). */
+    template <typename CellIterator>
+    void
+    cell_matrix(const CellIterator &cell, FullMatrix<double> &local);
+
+    /** C on the cell's faces on Gamma_C (zero elsewhere). */
+    template <typename CellIterator>
+    void
+    contact_matrix(const CellIterator &cell, FullMatrix<double> &local);
+
+    void
+    print_memory(const std::string &after);
+
+    const dualcontact::Parameters &parameters;
+    const dualcontact::Scene<dim>  scene;
+    const unsigned int             refinements;
+    const bool                     geometric;
+    const double                   half_width;
+    const unsigned int             chebyshev_degree;
+    const double                   lambda, mu;
+    Tensor<1, dim>                 normal; // of the foundation
+    Point<dim>                     first_contact;
+    std::set<types::boundary_id>   contact_ids;
+    double                         r = 0., chi = 0.;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    const MappingQ<dim>                       mapping;
+    const FESystem<dim>                       fe;
+    DoFHandler<dim>                           dof_handler;
+    AffineConstraints<double>                 constraints;
+    Matrix                                    matrix;
+    Vector                                    rhs;
+
+    // the cell and face integrals
+    FEValues<dim>      fe_values;
+    FEFaceValues<dim>  fe_face_values;
+    FullMatrix<double> contact_local;
+
+    // algebraic multigrid: the program's own solver
+    std::unique_ptr<dualcontact::ElasticSolver<dim>> algebraic;
+
+    // geometric multigrid
+    using Smoother =
+      PreconditionChebyshev<Matrix,
+                            Vector,
+                            TrilinosWrappers::PreconditionJacobi>;
+    MGConstrainedDoFs     mg_constrained_dofs;
+    MGLevelObject<Matrix> level_matrices, interface_matrices;
+    std::unique_ptr<MGTransferPrebuilt<Vector>>      transfer;
+    ReductionControl                                 coarse_control;
+    SolverCG<Vector>                                 coarse_cg;
+    TrilinosWrappers::PreconditionAMG                coarse_amg;
+    std::unique_ptr<MGCoarseGridBase<Vector>>        coarse;
+    MGSmootherPrecondition<Matrix, Smoother, Vector> smoother;
+    mg::Matrix<Vector>                               mg_matrix, mg_interface;
+    std::unique_ptr<Multigrid<Vector>>               multigrid;
+    std::unique_ptr<PreconditionMG<dim, Vector, MGTransferPrebuilt<Vector>>>
+      preconditioner;
+
+    ConditionalOStream pcout;
+    double             memory_at_start = 0.;
+    double             time_assembly = 0., time_setup = 0., time_cg = 0.;
+  };
+
+  template <int dim>
+  MultigridBenchmark<dim>::MultigridBenchmark(
+    const dualcontact::Parameters &parameters,
+    const unsigned int             refinements,
+    const bool                     geometric,
+    const double                   half_width,
+    const unsigned int             chebyshev_degree)
+      : parameters(parameters)
+      , scene(parameters)
+      , refinements(refinements)
+      , geometric(geometric)
+      , half_width(half_width)
+      , chebyshev_degree(chebyshev_degree)
+      , lambda(parameters.material.lambda())
+      , mu(parameters.material.mu())
+      , contact_ids(scene.ids_with(dualcontact::BoundaryCondition::contact))
+      // the program's mesh smoothing; the levels for the geometric multigrid
+      , triangulation(
+          MPI_COMM_WORLD,
+          typename Triangulation<dim>::MeshSmoothing(
+            Triangulation<dim>::smoothing_on_refinement |
+            Triangulation<dim>::smoothing_on_coarsening),
+          geometric ?
+            parallel::distributed::Triangulation<
+              dim>::construct_multigrid_hierarchy :
+            parallel::distributed::Triangulation<dim>::default_setting)
+      , mapping(1)
+      , fe(FE_Q<dim>(1), dim)
+      , dof_handler(triangulation)
+      , fe_values(mapping,
+                  fe,
+                  QGauss<dim>(2),
+                  update_values | update_gradients | update_JxW_values)
+      , fe_face_values(mapping,
+                       fe,
+                       QGauss<dim - 1>(2),
+                       update_values | update_JxW_values)
+      , contact_local(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+      , coarse_control(2000, 1e-300, 1e-12, false, false)
+      , coarse_cg(coarse_control)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {
+    if (contact_ids.empty())
+      throw dualcontact::InputError("the scene has no contact boundary.",
+                                    dualcontact::exit_invalid_value);
+    if (parameters.obstacle.type != "plane")
+      throw dualcontact::InputError(
+        "the obstacle must be the plane foundation, not '" +
+          parameters.obstacle.type + "'.",
+        dualcontact::exit_invalid_value);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        normal[d]        = parameters.obstacle.normal[d];
+        first_contact[d] = parameters.obstacle.point[d];
+      }
+    normal /= normal.norm();
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::print_memory(const std::string &after)
+  {
+    const auto [peak, now] = memory_mb();
+    pcout << "  after " << after << ": peak memory " << peak << " MB (now "
+          << now << " MB), "
+          << 1024. * (peak - memory_at_start) / dof_handler.n_dofs()
+          << " KB per DoF above the start" << std::endl;
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::make_mesh_and_dofs()
+  {
+    scene.create_mesh(triangulation);
+    triangulation.refine_global(refinements);
+    dof_handler.distribute_dofs(fe);
+    if (geometric)
+      dof_handler.distribute_mg_dofs();
+    pcout << (geometric ? "geometric" : "algebraic")
+          << " multigrid: " << triangulation.n_global_active_cells()
+          << " cells, " << dof_handler.n_dofs() << " DoFs, "
+          << triangulation.n_global_levels() << " levels" << std::endl;
+  }
+
+  template <int dim>
+  template <typename CellIterator>
+  void
+  MultigridBenchmark<dim>::cell_matrix(const CellIterator &cell,
+                                       FullMatrix<double> &local)
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    fe_values.reinit(cell);
+    local = 0;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const SymmetricTensor<2, dim> eps_i =
+            fe_values[displacement].symmetric_gradient(i, q);
+          for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+            {
+              const SymmetricTensor<2, dim> eps_j =
+                fe_values[displacement].symmetric_gradient(j, q);
+              local(i, j) += (lambda * trace(eps_i) * trace(eps_j) +
+                              2. * mu * (eps_i * eps_j)) *
+                             fe_values.JxW(q);
+            }
+          // the lumped mass: the row sum of int u.v
+          local(i, i) += chi * fe_values.shape_value(i, q) * fe_values.JxW(q);
+        }
+  }
+
+  template <int dim>
+  template <typename CellIterator>
+  void
+  MultigridBenchmark<dim>::contact_matrix(const CellIterator &cell,
+                                          FullMatrix<double> &local)
+  {
+    local = 0;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() &&
+          contact_ids.count(cell->face(f)->boundary_id()))
+        {
+          fe_face_values.reinit(cell, f);
+          for (unsigned int k = 0; k < cell->face(f)->n_vertices(); ++k)
+            {
+              const unsigned int v = GeometryInfo<dim>::face_to_cell_vertices(
+                f,
+                k,
+                cell->face_orientation(f),
+                cell->face_flip(f),
+                cell->face_rotation(f));
+              // in the zone: the distance from the point of first contact
+              // along the foundation
+              Tensor<1, dim> along = cell->vertex(v) - first_contact;
+              along -= (along * normal) * normal;
+              if (along.norm() >= half_width)
+                continue;
+              // r m_s n n^T, m_s = int phi_s over the face (lumped)
+              const unsigned int first = fe.component_to_system_index(0, v);
+              double             m     = 0.;
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                m += fe_face_values.shape_value_component(first, q, 0) *
+                     fe_face_values.JxW(q);
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  local(fe.component_to_system_index(a, v),
+                        fe.component_to_system_index(b, v)) +=
+                    r * m * normal[a] * normal[b];
+            }
+        }
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::assemble_system()
+  {
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    IndexSet        relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.close();
+    {
+      DynamicSparsityPattern dsp(relevant);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 owned,
+                                                 MPI_COMM_WORLD,
+                                                 relevant);
+      matrix.reinit(owned, owned, dsp, MPI_COMM_WORLD);
+    }
+    rhs.reinit(owned, MPI_COMM_WORLD);
+
+    // r and chi as the program sets them (contact_problem.cc)
+    double h_C = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && contact_ids.count(face->boundary_id()))
+            h_C = std::min(h_C, face->diameter());
+    h_C = Utilities::MPI::min(h_C, MPI_COMM_WORLD);
+    r   = parameters.solver.augmentation * (lambda + 2. * mu) / h_C;
+    chi = parameters.solver.proximal * parameters.material.youngs_modulus /
+          std::pow(scene.characteristic_length(), 2);
+
+    // K, M and the load as the program assembles them, then chi M and C
+    dualcontact::LumpedMass mass;
+    mass.diagonal.reinit(owned, MPI_COMM_WORLD);
+    dualcontact::assemble_elasticity<dim>(
+      mapping, dof_handler, scene, constraints, matrix, rhs, &mass, nullptr);
+    mass.add_to(matrix, chi);
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        {
+          contact_matrix(cell, contact_local);
+          if (contact_local.frobenius_norm() == 0.)
+            continue;
+          cell->get_dof_indices(indices);
+          constraints.distribute_local_to_global(contact_local,
+                                                 indices,
+                                                 matrix);
+        }
+    matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::setup_algebraic()
+  {
+    algebraic = std::make_unique<dualcontact::ElasticSolver<dim>>(
+      parameters.solver, parameters.material.poissons_ratio);
+    algebraic->set_near_null_space(mapping,
+                                   dof_handler,
+                                   matrix,
+                                   scene.center(),
+                                   scene.characteristic_length());
+    algebraic->initialize(matrix);
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::setup_geometric()
+  {
+    const unsigned int n_levels = triangulation.n_global_levels();
+    mg_constrained_dofs.initialize(dof_handler);
+    level_matrices.resize(0, n_levels - 1);
+    interface_matrices.resize(0, n_levels - 1);
+
+    // The DoFs on a refinement edge (where a level's cells end at coarser
+    // active cells) are zero on the level: they are coupled to the rest by
+    // the interface matrices.
+    std::vector<AffineConstraints<double>> edge_constraints(n_levels);
+    for (unsigned int level = 0; level < n_levels; ++level)
+      {
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_level_dofs(dof_handler,
+                                                      level,
+                                                      relevant);
+        edge_constraints[level].reinit(relevant);
+        edge_constraints[level].add_lines(
+          mg_constrained_dofs.get_refinement_edge_indices(level));
+        edge_constraints[level].close();
+
+        const IndexSet        &owned = dof_handler.locally_owned_mg_dofs(level);
+        DynamicSparsityPattern dsp(relevant);
+        MGTools::make_sparsity_pattern(dof_handler, dsp, level);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   owned,
+                                                   MPI_COMM_WORLD,
+                                                   relevant);
+        level_matrices[level].reinit(owned, owned, dsp, MPI_COMM_WORLD);
+
+        DynamicSparsityPattern interface_dsp(relevant);
+        MGTools::make_interface_sparsity_pattern(dof_handler,
+                                                 mg_constrained_dofs,
+                                                 interface_dsp,
+                                                 level);
+        SparsityTools::distribute_sparsity_pattern(interface_dsp,
+                                                   owned,
+                                                   MPI_COMM_WORLD,
+                                                   relevant);
+        interface_matrices[level].reinit(owned,
+                                         owned,
+                                         interface_dsp,
+                                         MPI_COMM_WORLD);
+      }
+
+    FullMatrix<double> local(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.mg_cell_iterators())
+      if (cell->level_subdomain_id() == triangulation.locally_owned_subdomain())
+        {
+          cell_matrix(cell, local);
+          if (cell->at_boundary())
+            {
+              contact_matrix(cell, contact_local);
+              local.add(1., contact_local);
+            }
+          cell->get_mg_dof_indices(indices);
+          const unsigned int level = cell->level();
+          edge_constraints[level].distribute_local_to_global(
+            local, indices, level_matrices[level]);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            for (unsigned int j = 0; j < indices.size(); ++j)
+              if (mg_constrained_dofs.is_interface_matrix_entry(level,
+                                                                indices[i],
+                                                                indices[j]))
+                interface_matrices[level].add(indices[i],
+                                              indices[j],
+                                              local(i, j));
+        }
+    for (unsigned int level = 0; level < n_levels; ++level)
+      {
+        level_matrices[level].compress(VectorOperation::add);
+        interface_matrices[level].compress(VectorOperation::add);
+      }
+
+    transfer =
+      std::make_unique<MGTransferPrebuilt<Vector>>(mg_constrained_dofs);
+    transfer->build(dof_handler);
+
+    coarse_amg.initialize(level_matrices[0]);
+    coarse = std::make_unique<
+      MGCoarseGridIterativeSolver<Vector,
+                                  SolverCG<Vector>,
+                                  Matrix,
+                                  TrilinosWrappers::PreconditionAMG>>(
+      coarse_cg, level_matrices[0], coarse_amg);
+
+    // Chebyshev with the inverse diagonal of each level, its largest
+    // eigenvalue estimated by a few CG steps
+    MGLevelObject<typename Smoother::AdditionalData> data(0, n_levels - 1);
+    for (unsigned int level = 0; level < n_levels; ++level)
+      {
+        auto jacobi = std::make_shared<TrilinosWrappers::PreconditionJacobi>();
+        jacobi->initialize(level_matrices[level]);
+        data[level].preconditioner      = jacobi;
+        data[level].degree              = chebyshev_degree;
+        data[level].smoothing_range     = 20.;
+        data[level].eig_cg_n_iterations = 12;
+      }
+    smoother.initialize(level_matrices, data);
+
+    mg_matrix.initialize(level_matrices);
+    mg_interface.initialize(interface_matrices);
+    multigrid = std::make_unique<Multigrid<Vector>>(
+      mg_matrix, *coarse, *transfer, smoother, smoother);
+    multigrid->set_edge_matrices(mg_interface, mg_interface);
+    preconditioner =
+      std::make_unique<PreconditionMG<dim, Vector, MGTransferPrebuilt<Vector>>>(
+        dof_handler, *multigrid, *transfer);
+  }
+
+  template <int dim>
+  unsigned int
+  MultigridBenchmark<dim>::solve(Vector &x)
+  {
+    if (!geometric)
+      return algebraic->solve(matrix, x, rhs);
+    SolverControl    control(parameters.solver.max_linear_iterations,
+                          parameters.solver.linear_tolerance * rhs.l2_norm());
+    SolverCG<Vector> cg(control);
+    cg.solve(matrix, x, rhs, *preconditioner);
+    return control.last_step();
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::run()
+  {
+    memory_at_start = memory_mb().second;
+    make_mesh_and_dofs();
+
+    Timer timer(MPI_COMM_WORLD, true);
+    assemble_system();
+    time_assembly = timer.wall_time();
+    print_memory("assembly");
+
+    timer.restart();
+    if (geometric)
+      setup_geometric();
+    else
+      setup_algebraic();
+    time_setup = timer.wall_time();
+    print_memory("the set-up");
+
+    Vector x(rhs);
+    x = 0.;
+    timer.restart();
+    const unsigned int iterations = solve(x);
+    time_cg                       = timer.wall_time();
+    constraints.distribute(x);
+    print_memory("the solve");
+
+    const double peak = memory_mb().first;
+    pcout << "  assembly " << time_assembly << " s, set-up " << time_setup
+          << " s, CG " << iterations << " iterations " << time_cg
+          << " s, |x| = " << x.l2_norm() << std::endl;
+    pcout << std::setprecision(10) << "RESULT preconditioner "
+          << (geometric ? "gmg" : "amg") << " dim " << dim << " dofs "
+          << dof_handler.n_dofs() << " levels "
+          << triangulation.n_global_levels() << " cg " << iterations
+          << " time_assembly " << time_assembly << " time_setup " << time_setup
+          << " time_cg " << time_cg << " peak_mb " << peak << " start_mb "
+          << memory_at_start << " x_norm " << x.l2_norm() << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const std::string usage =
+    "Usage: benchmark_multigrid scene.prm refinements amg|gmg [--half-width "
+    "a] [--degree k] [--set \"Subsection/Entry=value\" ...]\n(see the head "
+    "of contrib/benchmark_multigrid.cc)\n";
+  try
+    {
+      if (argc < 4)
+        throw dualcontact::InputError("too few arguments.",
+                                      dualcontact::exit_usage);
+      const std::string kind = argv[3];
+      if (kind != "amg" && kind != "gmg")
+        throw dualcontact::InputError("the preconditioner is 'amg' or 'gmg', "
+                                      "not '" +
+                                        kind + "'.",
+                                      dualcontact::exit_usage);
+      const int                refinements = std::stoi(argv[2]);
+      double                   half_width  = 0.1;
+      int                      degree      = 3;
+      std::vector<std::string> overrides;
+      for (int i = 4; i < argc; i += 2)
+        {
+          const std::string option = argv[i];
+          if (i + 1 >= argc)
+            throw dualcontact::InputError(option + " needs a value.",
+                                          dualcontact::exit_usage);
+          if (option == "--half-width")
+            half_width = std::stod(argv[i + 1]);
+          else if (option == "--degree")
+            degree = std::stoi(argv[i + 1]);
+          else if (option == "--set")
+            overrides.emplace_back(argv[i + 1]);
+          else
+            throw dualcontact::InputError("unknown option '" + option + "'.",
+                                          dualcontact::exit_usage);
+        }
+      if (refinements < 0 || !(half_width > 0.) || degree < 1)
+        throw dualcontact::InputError(
+          "refinements >= 0, half-width > 0 and degree >= 1 are needed.",
+          dualcontact::exit_usage);
+
+      dualcontact::Parameters parameters;
+      parameters.read_file(argv[1], overrides);
+      if (parameters.geometry.dimension == 2)
+        MultigridBenchmark<2>(
+          parameters, refinements, kind == "gmg", half_width, degree)
+          .run();
+      else
+        MultigridBenchmark<3>(
+          parameters, refinements, kind == "gmg", half_width, degree)
+          .run();
+    }
+  catch (const dualcontact::InputError &error)
+    {
+      if (root)
+        std::cerr << "benchmark_multigrid: " << error.what() << '\n'
+                  << (error.code == dualcontact::exit_usage ? usage : "");
+      return error.code;
+    }
+  catch (const std::exception &error)
+    {
+      if (root)
+        std::cerr << "benchmark_multigrid: " << error.what() << '\n' << usage;
+      return dualcontact::exit_usage;
+    }
+  return 0;
+}
