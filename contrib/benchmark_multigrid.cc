@@ -1,11 +1,12 @@
 // benchmark_multigrid: what one linear solve of a contact scene's Newton
 // matrix costs in memory and time with the algebraic multigrid every solve
 // of dualcontact uses (ML, ElasticSolver in elasticity.h), and with a
-// geometric multigrid on the levels of the p4est mesh. It answers one
-// question of doc/performance.md: can a solve of this code fit in 1 KB per
-// DoF, and which preconditioner does that take?
+// geometric multigrid on the levels of the p4est mesh, with assembled level
+// matrices or with no matrix at all. It answers one question of
+// doc/performance.md: can a solve of this code fit in 1 KB per DoF, what
+// does that take, and what does it cost in time?
 //
-//   mpirun -np 2 build/benchmark_multigrid scene.prm refinements amg|gmg
+//   mpirun -np 2 build/benchmark_multigrid scene.prm refinements amg|gmg|mf
 //          [--half-width a] [--degree k] [--set "Subsection/Entry=value"]...
 //
 // The matrix is the one the contact solver's last Newton steps solve with
@@ -33,15 +34,26 @@
 //   degree (default 3) with the inverse diagonal, prolongation by the
 //   interpolation of the nested spaces, and CG with ML on the coarsest
 //   level (1e-12).
+// mf: the same multigrid and outer CG with no matrix stored: K applied by
+//   quadrature on the cells (FEEvaluation, MatrixFreeOperators::Base, the
+//   hanging nodes resolved by MatrixFree), chi M as a diagonal and C as a
+//   list of entries (condensed onto the masters of hanging nodes, as the
+//   program condenses them), on the active mesh and on each level; the
+//   load and the lumped mass by the library's assemble_load();
+//   LinearAlgebra::distributed::Vector throughout, and CG without a
+//   preconditioner on the coarsest level.
 // --set overrides an entry of the scene, as for the program (e.g. --set
 // "Material/Poisson's ratio=0.49").
 //
 // Printed: the DoFs and levels, the peak resident memory summed over the
 // ranks after assembly, after the preconditioner's set-up and after the
 // solve (and per DoF above the processes' memory at the start), the times,
-// the CG iterations, |x|; the last line, "RESULT key value ...", is what
+// the CG iterations, |x|, and how many doubles FEEvaluation works on at once
+// (the SIMD width deal.II was built with: 1 for Debian's package, which
+// makes the matrix-free operator several times slower than with AVX); the
+// last line, "RESULT key value ...", is what
 // doc/benchmark_multigrid.sh reads. The program checks nothing itself: the
-// test multigrid_same_solution (tests/CMakeLists.txt) compares the two.
+// test multigrid_same_solution (tests/CMakeLists.txt) compares the three.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -59,7 +71,9 @@
 #include <deal.II/fe/mapping_q.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -67,12 +81,17 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/matrix_free/operators.h>
+#include <deal.II/matrix_free/tools.h>
 #include <deal.II/multigrid/mg_coarse.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 #include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
 #include <deal.II/multigrid/mg_tools.h>
 #include <deal.II/multigrid/mg_transfer.h>
+#include <deal.II/multigrid/mg_transfer_matrix_free.h>
 #include <deal.II/multigrid/multigrid.h>
 
 #include <dualcontact/elasticity.h>
@@ -103,13 +122,142 @@ namespace
             Utilities::MPI::sum(stats.VmRSS / 1024., MPI_COMM_WORLD)};
   }
 
+  using DistributedVector = LinearAlgebra::distributed::Vector<double>;
+
+  /** An entry (row, column, value) of a matrix, in global DoF indices. */
+  struct Entry
+  {
+    types::global_dof_index row, column;
+    double                  value;
+  };
+
+  /**
+   * H = K + D + C without a stored matrix: K (linear elasticity, Q1) by
+   * cell quadrature (FEEvaluation), D a diagonal (the lumped chi M), C the
+   * contact terms as a list of entries. One per level and one on the active
+   * mesh (where hanging nodes are resolved by the MatrixFree object and C
+   * holds the entries condensed onto the masters).
+   */
+  template <int dim>
+  class MatrixFreeElasticity
+      : public MatrixFreeOperators::Base<dim, DistributedVector>
+  {
+  public:
+    void
+    set_terms(const double              lambda_,
+              const double              mu_,
+              const DistributedVector  &diagonal_,
+              const std::vector<Entry> &contact_)
+    {
+      lambda   = lambda_;
+      mu       = mu_;
+      diagonal = diagonal_;
+      contact  = contact_;
+      this->initialize_dof_vector(contact_product);
+    }
+
+    void
+    compute_diagonal() override
+    {
+      this->inverse_diagonal_entries =
+        std::make_shared<DiagonalMatrix<DistributedVector>>();
+      DistributedVector &d = this->inverse_diagonal_entries->get_vector();
+      this->initialize_dof_vector(d);
+      MatrixFreeTools::compute_diagonal(*this->data,
+                                        d,
+                                        &MatrixFreeElasticity::cell_operation,
+                                        this);
+      add_entries(d, nullptr);
+      for (unsigned int i = 0; i < d.locally_owned_size(); ++i)
+        {
+          const double value = d.local_element(i) + diagonal.local_element(i);
+          d.local_element(i) = value > 0. ? 1. / value : 1.;
+        }
+    }
+
+  private:
+    void
+    apply_add(DistributedVector       &dst,
+              const DistributedVector &src) const override
+    {
+      this->data->cell_loop(&MatrixFreeElasticity::local_apply, this, dst, src);
+      for (unsigned int i = 0; i < dst.locally_owned_size(); ++i)
+        dst.local_element(i) +=
+          diagonal.local_element(i) * src.local_element(i);
+      add_entries(dst, &src);
+    }
+
+    // dst += C src (with src) or the diagonal of C (without); collective
+    void
+    add_entries(DistributedVector &dst, const DistributedVector *src) const
+    {
+      if (src != nullptr)
+        src->update_ghost_values();
+      contact_product = 0.;
+      for (const Entry &entry : contact)
+        if (src != nullptr)
+          contact_product(entry.row) += entry.value * (*src)(entry.column);
+        else if (entry.row == entry.column)
+          contact_product(entry.row) += entry.value;
+      contact_product.compress(VectorOperation::add);
+      if (src != nullptr)
+        src->zero_out_ghost_values();
+      dst.add(1., contact_product);
+    }
+
+    void
+    cell_operation(FEEvaluation<dim, 1, 2, dim, double> &phi) const
+    {
+      phi.evaluate(EvaluationFlags::gradients);
+      for (const unsigned int q : phi.quadrature_point_indices())
+        {
+          auto       sigma = phi.get_symmetric_gradient(q);
+          const auto div   = trace(sigma);
+          sigma *= 2. * mu;
+          for (unsigned int d = 0; d < dim; ++d)
+            sigma[d][d] += lambda * div;
+          phi.submit_symmetric_gradient(sigma, q);
+        }
+      phi.integrate(EvaluationFlags::gradients);
+    }
+
+    void
+    local_apply(const MatrixFree<dim, double>               &data,
+                DistributedVector                           &dst,
+                const DistributedVector                     &src,
+                const std::pair<unsigned int, unsigned int> &cells) const
+    {
+      FEEvaluation<dim, 1, 2, dim, double> phi(data);
+      for (unsigned int cell = cells.first; cell < cells.second; ++cell)
+        {
+          phi.reinit(cell);
+          phi.read_dof_values(src);
+          cell_operation(phi);
+          phi.distribute_local_to_global(dst);
+        }
+    }
+
+    double                    lambda = 0., mu = 0.;
+    DistributedVector         diagonal;
+    std::vector<Entry>        contact;
+    mutable DistributedVector contact_product;
+  };
+
+  /** The preconditioner (and, for mf, the operator) of a run. */
+  enum class Kind
+  {
+    amg, // the program's ML hierarchy on the assembled matrix
+    gmg, // geometric multigrid with assembled level matrices
+    mf   // geometric multigrid, no matrix stored anywhere
+  };
+
   template <int dim>
   class MultigridBenchmark
   {
   public:
     MultigridBenchmark(const dualcontact::Parameters &parameters,
                        unsigned int                   refinements,
-                       bool                           geometric,
+                       Kind                           kind,
                        double                         half_width,
                        unsigned int                   chebyshev_degree);
 
@@ -125,8 +273,24 @@ namespace
     setup_algebraic();
     void
     setup_geometric();
-    unsigned int
-    solve(Vector &x);
+    void
+    assemble_matrix_free();
+    void
+    setup_matrix_free();
+    /** Solve H x = b; return the CG iterations and |x|. */
+    std::pair<unsigned int, double>
+    solve();
+
+    void
+    make_constraints_and_coefficients();
+
+    /** The entries of a cell's C, condensed by `condense` (if given). */
+    template <typename CellIterator>
+    void
+    add_contact_entries(const CellIterator                         &cell,
+                        const std::vector<types::global_dof_index> &indices,
+                        const AffineConstraints<double>            *condense,
+                        std::vector<Entry>                         &entries);
 
     /** K + chi M of one cell (level or active). */
     template <typename CellIterator>
@@ -144,7 +308,7 @@ namespace
     const dualcontact::Parameters &parameters;
     const dualcontact::Scene<dim>  scene;
     const unsigned int             refinements;
-    const bool                     geometric;
+    const Kind                     kind;
     const double                   half_width;
     const unsigned int             chebyshev_degree;
     const double                   lambda, mu;
@@ -187,6 +351,29 @@ namespace
     std::unique_ptr<PreconditionMG<dim, Vector, MGTransferPrebuilt<Vector>>>
       preconditioner;
 
+    // matrix-free geometric multigrid
+    using MatrixFreeSmoother =
+      PreconditionChebyshev<MatrixFreeElasticity<dim>, DistributedVector>;
+    MatrixFreeElasticity<dim>                          mf_operator;
+    DistributedVector                                  mf_rhs;
+    MGLevelObject<MatrixFreeElasticity<dim>>           mf_levels;
+    std::unique_ptr<MGTransferMatrixFree<dim, double>> mf_transfer;
+    MGSmootherPrecondition<MatrixFreeElasticity<dim>,
+                           MatrixFreeSmoother,
+                           DistributedVector>
+                                                         mf_smoother;
+    SolverCG<DistributedVector>                          mf_coarse_cg;
+    PreconditionIdentity                                 mf_identity;
+    std::unique_ptr<MGCoarseGridBase<DistributedVector>> mf_coarse;
+    MGLevelObject<
+      MatrixFreeOperators::MGInterfaceOperator<MatrixFreeElasticity<dim>>>
+                                                  mf_interface;
+    mg::Matrix<DistributedVector>                 mf_mg_matrix, mf_mg_interface;
+    std::unique_ptr<Multigrid<DistributedVector>> mf_multigrid;
+    std::unique_ptr<
+      PreconditionMG<dim, DistributedVector, MGTransferMatrixFree<dim, double>>>
+      mf_preconditioner;
+
     ConditionalOStream pcout;
     double             memory_at_start = 0.;
     double             time_assembly = 0., time_setup = 0., time_cg = 0.;
@@ -196,13 +383,13 @@ namespace
   MultigridBenchmark<dim>::MultigridBenchmark(
     const dualcontact::Parameters &parameters,
     const unsigned int             refinements,
-    const bool                     geometric,
+    const Kind                     kind,
     const double                   half_width,
     const unsigned int             chebyshev_degree)
       : parameters(parameters)
       , scene(parameters)
       , refinements(refinements)
-      , geometric(geometric)
+      , kind(kind)
       , half_width(half_width)
       , chebyshev_degree(chebyshev_degree)
       , lambda(parameters.material.lambda())
@@ -214,7 +401,7 @@ namespace
           typename Triangulation<dim>::MeshSmoothing(
             Triangulation<dim>::smoothing_on_refinement |
             Triangulation<dim>::smoothing_on_coarsening),
-          geometric ?
+          kind != Kind::amg ?
             parallel::distributed::Triangulation<
               dim>::construct_multigrid_hierarchy :
             parallel::distributed::Triangulation<dim>::default_setting)
@@ -232,6 +419,7 @@ namespace
       , contact_local(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
       , coarse_control(2000, 1e-300, 1e-12, false, false)
       , coarse_cg(coarse_control)
+      , mf_coarse_cg(coarse_control)
       , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
     if (contact_ids.empty())
@@ -268,11 +456,13 @@ namespace
     scene.create_mesh(triangulation);
     triangulation.refine_global(refinements);
     dof_handler.distribute_dofs(fe);
-    if (geometric)
+    if (kind != Kind::amg)
       dof_handler.distribute_mg_dofs();
-    pcout << (geometric ? "geometric" : "algebraic")
-          << " multigrid: " << triangulation.n_global_active_cells()
-          << " cells, " << dof_handler.n_dofs() << " DoFs, "
+    pcout << (kind == Kind::amg ? "algebraic multigrid" :
+              kind == Kind::gmg ? "geometric multigrid" :
+                                  "matrix-free geometric multigrid")
+          << ": " << triangulation.n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " DoFs, "
           << triangulation.n_global_levels() << " levels" << std::endl;
   }
 
@@ -347,24 +537,13 @@ namespace
 
   template <int dim>
   void
-  MultigridBenchmark<dim>::assemble_system()
+  MultigridBenchmark<dim>::make_constraints_and_coefficients()
   {
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
-    IndexSet        relevant;
+    IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     constraints.reinit(relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     constraints.close();
-    {
-      DynamicSparsityPattern dsp(relevant);
-      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-      SparsityTools::distribute_sparsity_pattern(dsp,
-                                                 owned,
-                                                 MPI_COMM_WORLD,
-                                                 relevant);
-      matrix.reinit(owned, owned, dsp, MPI_COMM_WORLD);
-    }
-    rhs.reinit(owned, MPI_COMM_WORLD);
 
     // r and chi as the program sets them (contact_problem.cc)
     double h_C = std::numeric_limits<double>::max();
@@ -377,6 +556,57 @@ namespace
     r   = parameters.solver.augmentation * (lambda + 2. * mu) / h_C;
     chi = parameters.solver.proximal * parameters.material.youngs_modulus /
           std::pow(scene.characteristic_length(), 2);
+  }
+
+  template <int dim>
+  template <typename CellIterator>
+  void
+  MultigridBenchmark<dim>::add_contact_entries(
+    const CellIterator                         &cell,
+    const std::vector<types::global_dof_index> &indices,
+    const AffineConstraints<double>            *condense,
+    std::vector<Entry>                         &entries)
+  {
+    contact_matrix(cell, contact_local);
+    // a DoF as the condensed space sees it: itself, or the masters of a
+    // hanging node with their weights
+    const auto expand = [condense](const types::global_dof_index i) {
+      std::vector<std::pair<types::global_dof_index, double>> terms;
+      if (condense == nullptr || !condense->is_constrained(i))
+        terms.emplace_back(i, 1.);
+      else if (const auto *masters = condense->get_constraint_entries(i))
+        terms = *masters;
+      return terms;
+    };
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      for (unsigned int j = 0; j < indices.size(); ++j)
+        if (contact_local(i, j) != 0.)
+          for (const auto &[row, row_weight] : expand(indices[i]))
+            for (const auto &[column, column_weight] : expand(indices[j]))
+              entries.push_back(
+                {row,
+                 column,
+                 row_weight * column_weight * contact_local(i, j)});
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::assemble_system()
+  {
+    make_constraints_and_coefficients();
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      DynamicSparsityPattern dsp(relevant);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 owned,
+                                                 MPI_COMM_WORLD,
+                                                 relevant);
+      matrix.reinit(owned, owned, dsp, MPI_COMM_WORLD);
+    }
+    rhs.reinit(owned, MPI_COMM_WORLD);
 
     // K, M and the load as the program assembles them, then chi M and C
     dualcontact::LumpedMass mass;
@@ -528,16 +758,159 @@ namespace
   }
 
   template <int dim>
-  unsigned int
-  MultigridBenchmark<dim>::solve(Vector &x)
+  void
+  MultigridBenchmark<dim>::assemble_matrix_free()
   {
-    if (!geometric)
-      return algebraic->solve(matrix, x, rhs);
-    SolverControl    control(parameters.solver.max_linear_iterations,
-                          parameters.solver.linear_tolerance * rhs.l2_norm());
-    SolverCG<Vector> cg(control);
-    cg.solve(matrix, x, rhs, *preconditioner);
-    return control.last_step();
+    make_constraints_and_coefficients();
+    typename MatrixFree<dim, double>::AdditionalData data;
+    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
+    data.mapping_update_flags  = update_gradients | update_JxW_values;
+    auto matrix_free           = std::make_shared<MatrixFree<dim, double>>();
+    matrix_free->reinit(mapping, dof_handler, constraints, QGauss<1>(2), data);
+    mf_operator.initialize(matrix_free);
+
+    // the load and the lumped M as the program assembles them (without K),
+    // and C condensed as the program condenses it
+    DistributedVector mass;
+    mf_operator.initialize_dof_vector(mass);
+    mf_operator.initialize_dof_vector(mf_rhs);
+    dualcontact::assemble_load<dim>(
+      mapping, dof_handler, scene, constraints, mf_rhs, &mass);
+    mass *= chi;
+    std::vector<Entry>                   entries;
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        {
+          cell->get_dof_indices(indices);
+          add_contact_entries(cell, indices, &constraints, entries);
+        }
+    mf_operator.set_terms(lambda, mu, mass, entries);
+  }
+
+  template <int dim>
+  void
+  MultigridBenchmark<dim>::setup_matrix_free()
+  {
+    const unsigned int n_levels = triangulation.n_global_levels();
+    mg_constrained_dofs.initialize(dof_handler);
+    mf_levels.resize(0, n_levels - 1);
+    for (unsigned int level = 0; level < n_levels; ++level)
+      {
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_level_dofs(dof_handler,
+                                                      level,
+                                                      relevant);
+        AffineConstraints<double> level_constraints;
+        level_constraints.reinit(relevant);
+        level_constraints.close();
+        typename MatrixFree<dim, double>::AdditionalData data;
+        data.tasks_parallel_scheme =
+          MatrixFree<dim, double>::AdditionalData::none;
+        data.mapping_update_flags = update_gradients | update_JxW_values;
+        data.mg_level             = level;
+        auto matrix_free          = std::make_shared<MatrixFree<dim, double>>();
+        matrix_free->reinit(
+          mapping, dof_handler, level_constraints, QGauss<1>(2), data);
+        mf_levels[level].initialize(matrix_free, mg_constrained_dofs, level);
+      }
+
+    // each level's lumped chi M and C, on the level cells
+    std::vector<DistributedVector>  mass(n_levels);
+    std::vector<std::vector<Entry>> entries(n_levels);
+    for (unsigned int level = 0; level < n_levels; ++level)
+      mf_levels[level].initialize_dof_vector(mass[level]);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> indices(n);
+    for (const auto &cell : dof_handler.mg_cell_iterators())
+      if (cell->level_subdomain_id() == triangulation.locally_owned_subdomain())
+        {
+          const unsigned int level = cell->level();
+          cell->get_mg_dof_indices(indices);
+          fe_values.reinit(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < n; ++i)
+              mass[level](indices[i]) +=
+                chi * fe_values.shape_value(i, q) * fe_values.JxW(q);
+          if (cell->at_boundary())
+            add_contact_entries(cell, indices, nullptr, entries[level]);
+        }
+    for (unsigned int level = 0; level < n_levels; ++level)
+      {
+        mass[level].compress(VectorOperation::add);
+        mf_levels[level].set_terms(lambda, mu, mass[level], entries[level]);
+        mf_levels[level].compute_diagonal();
+      }
+
+    mf_transfer =
+      std::make_unique<MGTransferMatrixFree<dim, double>>(mg_constrained_dofs);
+    mf_transfer->build(dof_handler);
+
+    MGLevelObject<typename MatrixFreeSmoother::AdditionalData> data(0,
+                                                                    n_levels -
+                                                                      1);
+    for (unsigned int level = 0; level < n_levels; ++level)
+      {
+        data[level].preconditioner =
+          mf_levels[level].get_matrix_diagonal_inverse();
+        data[level].degree              = chebyshev_degree;
+        data[level].smoothing_range     = 20.;
+        data[level].eig_cg_n_iterations = 12;
+      }
+    mf_smoother.initialize(mf_levels, data);
+    mf_coarse =
+      std::make_unique<MGCoarseGridIterativeSolver<DistributedVector,
+                                                   SolverCG<DistributedVector>,
+                                                   MatrixFreeElasticity<dim>,
+                                                   PreconditionIdentity>>(
+        mf_coarse_cg, mf_levels[0], mf_identity);
+    mf_mg_matrix.initialize(mf_levels);
+    mf_interface.resize(0, n_levels - 1);
+    for (unsigned int level = 0; level < n_levels; ++level)
+      mf_interface[level].initialize(mf_levels[level]);
+    mf_mg_interface.initialize(mf_interface);
+    mf_multigrid = std::make_unique<Multigrid<DistributedVector>>(
+      mf_mg_matrix, *mf_coarse, *mf_transfer, mf_smoother, mf_smoother);
+    mf_multigrid->set_edge_matrices(mf_mg_interface, mf_mg_interface);
+    mf_preconditioner =
+      std::make_unique<PreconditionMG<dim,
+                                      DistributedVector,
+                                      MGTransferMatrixFree<dim, double>>>(
+        dof_handler, *mf_multigrid, *mf_transfer);
+  }
+
+  template <int dim>
+  std::pair<unsigned int, double>
+  MultigridBenchmark<dim>::solve()
+  {
+    if (kind == Kind::mf)
+      {
+        DistributedVector x;
+        mf_operator.initialize_dof_vector(x);
+        SolverControl control(parameters.solver.max_linear_iterations,
+                              parameters.solver.linear_tolerance *
+                                mf_rhs.l2_norm());
+        SolverCG<DistributedVector> cg(control);
+        cg.solve(mf_operator, x, mf_rhs, *mf_preconditioner);
+        constraints.distribute(x);
+        return {control.last_step(), x.l2_norm()};
+      }
+    Vector x(rhs);
+    x                       = 0.;
+    unsigned int iterations = 0;
+    if (kind == Kind::amg)
+      iterations = algebraic->solve(matrix, x, rhs);
+    else
+      {
+        SolverControl    control(parameters.solver.max_linear_iterations,
+                              parameters.solver.linear_tolerance *
+                                rhs.l2_norm());
+        SolverCG<Vector> cg(control);
+        cg.solve(matrix, x, rhs, *preconditioner);
+        iterations = control.last_step();
+      }
+    constraints.distribute(x);
+    return {iterations, x.l2_norm()};
   }
 
   template <int dim>
@@ -548,37 +921,42 @@ namespace
     make_mesh_and_dofs();
 
     Timer timer(MPI_COMM_WORLD, true);
-    assemble_system();
+    if (kind == Kind::mf)
+      assemble_matrix_free();
+    else
+      assemble_system();
     time_assembly = timer.wall_time();
     print_memory("assembly");
 
     timer.restart();
-    if (geometric)
+    if (kind == Kind::amg)
+      setup_algebraic();
+    else if (kind == Kind::gmg)
       setup_geometric();
     else
-      setup_algebraic();
+      setup_matrix_free();
     time_setup = timer.wall_time();
     print_memory("the set-up");
 
-    Vector x(rhs);
-    x = 0.;
     timer.restart();
-    const unsigned int iterations = solve(x);
-    time_cg                       = timer.wall_time();
-    constraints.distribute(x);
+    const auto [iterations, x_norm] = solve();
+    time_cg                         = timer.wall_time();
     print_memory("the solve");
 
     const double peak = memory_mb().first;
     pcout << "  assembly " << time_assembly << " s, set-up " << time_setup
           << " s, CG " << iterations << " iterations " << time_cg
-          << " s, |x| = " << x.l2_norm() << std::endl;
+          << " s, |x| = " << x_norm << std::endl;
     pcout << std::setprecision(10) << "RESULT preconditioner "
-          << (geometric ? "gmg" : "amg") << " dim " << dim << " dofs "
-          << dof_handler.n_dofs() << " levels "
+          << (kind == Kind::amg ? "amg" :
+              kind == Kind::gmg ? "gmg" :
+                                  "mf")
+          << " dim " << dim << " dofs " << dof_handler.n_dofs() << " levels "
           << triangulation.n_global_levels() << " cg " << iterations
           << " time_assembly " << time_assembly << " time_setup " << time_setup
           << " time_cg " << time_cg << " peak_mb " << peak << " start_mb "
-          << memory_at_start << " x_norm " << x.l2_norm() << std::endl;
+          << memory_at_start << " x_norm " << x_norm << " simd_doubles "
+          << VectorizedArray<double>::size() << std::endl;
   }
 } // namespace
 
@@ -588,7 +966,7 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const std::string usage =
-    "Usage: benchmark_multigrid scene.prm refinements amg|gmg [--half-width "
+    "Usage: benchmark_multigrid scene.prm refinements amg|gmg|mf [--half-width "
     "a] [--degree k] [--set \"Subsection/Entry=value\" ...]\n(see the head "
     "of contrib/benchmark_multigrid.cc)\n";
   try
@@ -596,12 +974,15 @@ main(int argc, char *argv[])
       if (argc < 4)
         throw dualcontact::InputError("too few arguments.",
                                       dualcontact::exit_usage);
-      const std::string kind = argv[3];
-      if (kind != "amg" && kind != "gmg")
-        throw dualcontact::InputError("the preconditioner is 'amg' or 'gmg', "
-                                      "not '" +
-                                        kind + "'.",
+      const std::string name = argv[3];
+      if (name != "amg" && name != "gmg" && name != "mf")
+        throw dualcontact::InputError("the preconditioner is 'amg', 'gmg' or "
+                                      "'mf', not '" +
+                                        name + "'.",
                                       dualcontact::exit_usage);
+      const Kind               kind        = name == "amg" ? Kind::amg :
+                                             name == "gmg" ? Kind::gmg :
+                                                             Kind::mf;
       const int                refinements = std::stoi(argv[2]);
       double                   half_width  = 0.1;
       int                      degree      = 3;
@@ -630,12 +1011,10 @@ main(int argc, char *argv[])
       dualcontact::Parameters parameters;
       parameters.read_file(argv[1], overrides);
       if (parameters.geometry.dimension == 2)
-        MultigridBenchmark<2>(
-          parameters, refinements, kind == "gmg", half_width, degree)
+        MultigridBenchmark<2>(parameters, refinements, kind, half_width, degree)
           .run();
       else
-        MultigridBenchmark<3>(
-          parameters, refinements, kind == "gmg", half_width, degree)
+        MultigridBenchmark<3>(parameters, refinements, kind, half_width, degree)
           .run();
     }
   catch (const dualcontact::InputError &error)

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Memory and cost of one linear solve of a contact scene's Newton matrix
-# with the program's algebraic multigrid (ML) and with a geometric
-# multigrid on the mesh levels (contrib/benchmark_multigrid.cc, whose head
-# says what is solved and how):
+# with the program's algebraic multigrid (ML), with a geometric multigrid on
+# assembled level matrices, and with a matrix-free geometric multigrid (no
+# matrix stored) (contrib/benchmark_multigrid.cc, whose head says what is
+# solved and how):
 #
 #   bash doc/benchmark_multigrid.sh [ranks]
 #
@@ -11,10 +12,10 @@
 #   prm/hertz_3d.prm  refined 0, 1, 2 times (9663, 63579, 456819 DoFs)
 #   prm/hertz.prm at nu = 0.49, refined 3 times, and the geometric
 #                     multigrid also with Chebyshev degree 5
-# with both preconditioners, and writes doc/benchmark_multigrid.md (the
-# table) and doc/benchmark_multigrid.log (the programs' output). Needs
+# with the three, and writes doc/benchmark_multigrid.md (the table) and
+# doc/benchmark_multigrid.log (the programs' output). Needs
 # build/benchmark_multigrid ($BENCHMARK to use another) and mpirun; extra
-# mpirun options in $MPIRUN_FLAGS. About 3 minutes on 2 cores.
+# mpirun options in $MPIRUN_FLAGS. About 4 minutes on 2 cores.
 set -euo pipefail
 export LC_ALL=C
 
@@ -48,14 +49,13 @@ run() {
 
 start=$(date +%s)
 for refinements in 2 3 4; do
-  for kind in amg gmg; do run "2D Hertz" hertz "$refinements" "$kind"; done
+  for kind in amg gmg mf; do run "2D Hertz" hertz "$refinements" "$kind"; done
 done
 for refinements in 0 1 2; do
-  for kind in amg gmg; do run "3D Hertz" hertz_3d "$refinements" "$kind"; done
+  for kind in amg gmg mf; do run "3D Hertz" hertz_3d "$refinements" "$kind"; done
 done
 nu="Material/Poisson's ratio=0.49"
-run "2D Hertz, nu = 0.49" hertz 3 amg --set "$nu"
-run "2D Hertz, nu = 0.49" hertz 3 gmg --set "$nu"
+for kind in amg gmg mf; do run "2D Hertz, nu = 0.49" hertz 3 "$kind" --set "$nu"; done
 run "2D Hertz, nu = 0.49, degree 5" hertz 3 gmg --set "$nu" --degree 5
 seconds=$(( $(date +%s) - start ))
 
@@ -72,19 +72,26 @@ the Newton matrix H = K + chi M + C of the scene on its mesh refined
 globally (C: the normal contact terms of the nodes within a = 0.1 of the
 point of first contact, as in the contact solver's last Newton steps),
 solved by CG to 1e-10 with the program's AMG (ML: smoothed aggregation of
-whole nodes with the rigid-body modes, as every solve of the program) or
+whole nodes with the rigid-body modes, as every solve of the program), or
 with a geometric multigrid V-cycle on the p4est levels (local smoothing,
-level matrices K_l + chi M_l + C_l with the contact terms rediscretised on
-each level, Chebyshev smoothing of degree 3 unless said). Columns: CG
+level operators K_l + chi M_l + C_l with the contact terms rediscretised on
+each level, Chebyshev smoothing of degree 3 unless said) whose level
+matrices are assembled ("geometric") or never stored ("matrix-free": K by
+cell quadrature with FEEvaluation, chi M a diagonal, C a list of entries,
+LinearAlgebra::distributed::Vector throughout). Columns: CG
 iterations; wall times of the set-up (ML's hierarchy; or the level
 matrices, transfer and smoother) and of CG; peak resident memory summed
 over the ranks at the end; KB per DoF = (peak - the processes' memory at
 the start) / DoFs; added = the same between this row and the previous mesh
 of the same scene and preconditioner (the growth that decides what fits).
 
-| scene | DoFs | levels | preconditioner | CG | set-up [s] | CG [s] | peak [MB] | KB per DoF | KB per added DoF |
-|---|---:|---:|---|---:|---:|---:|---:|---:|---:|
 EOF
+  simd=$(awk '{ for (i = 2; i < NF; i += 2) if ($i == "simd_doubles") { print $(i + 1); exit } }' "$rows")
+  echo "The deal.II build runs the matrix-free cell loops on ${simd:-?} double(s) at a time"
+  echo "(its SIMD width, DEAL_II_VECTORIZATION_WIDTH_IN_BITS; Debian's package has none: 1)."
+  echo
+  echo "| scene | DoFs | levels | preconditioner | CG | set-up [s] | CG [s] | peak [MB] | KB per DoF | KB per added DoF |"
+  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|"
   awk '
     {
       for (i = 2; i < NF; i += 2) v[$i] = $(i + 1)
@@ -95,7 +102,8 @@ EOF
         added = sprintf("%.2f", 1024 * (v["peak_mb"] - last_mb[key]) / (v["dofs"] - last_dofs[key]))
       last_dofs[key] = v["dofs"]; last_mb[key] = v["peak_mb"]
       printf "| %s | %d | %d | %s | %d | %.2f | %.2f | %.0f | %.2f | %s |\n",
-        label, v["dofs"], v["levels"], (v["preconditioner"] == "gmg" ? "geometric" : "AMG (ML)"),
+        label, v["dofs"], v["levels"],
+        (v["preconditioner"] == "gmg" ? "geometric" : v["preconditioner"] == "mf" ? "matrix-free" : "AMG (ML)"),
         v["cg"], v["time_setup"], v["time_cg"], v["peak_mb"],
         1024 * (v["peak_mb"] - v["start_mb"]) / v["dofs"], added
     }' "$rows"
