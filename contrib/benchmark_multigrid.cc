@@ -187,11 +187,13 @@ namespace
       add_entries(dst, &src);
     }
 
-    // dst += C src (with src) or the diagonal of C (without); collective
+    // dst += C src (with src) or the diagonal of C (without); collective.
+    // src is left with its ghost values as it came.
     void
     add_entries(DistributedVector &dst, const DistributedVector *src) const
     {
-      if (src != nullptr)
+      const bool had_ghosts = src != nullptr && src->has_ghost_elements();
+      if (src != nullptr && !had_ghosts)
         src->update_ghost_values();
       contact_product = 0.;
       for (const Entry &entry : contact)
@@ -200,7 +202,7 @@ namespace
         else if (entry.row == entry.column)
           contact_product(entry.row) += entry.value;
       contact_product.compress(VectorOperation::add);
-      if (src != nullptr)
+      if (src != nullptr && !had_ghosts)
         src->zero_out_ghost_values();
       dst.add(1., contact_product);
     }
