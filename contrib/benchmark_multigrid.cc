@@ -49,11 +49,11 @@
 // ranks after assembly, after the preconditioner's set-up and after the
 // solve (and per DoF above the processes' memory at the start), the times,
 // the CG iterations, |x|, and how many doubles FEEvaluation works on at once
-// (the SIMD width deal.II was built with: 1 for Debian's package, which
-// makes the matrix-free operator several times slower than with AVX); the
-// last line, "RESULT key value ...", is what
-// doc/benchmark_multigrid.sh reads. The program checks nothing itself: the
-// test multigrid_same_solution (tests/CMakeLists.txt) compares the three.
+// (the SIMD width deal.II was built with: 1 for Debian's package; what that
+// means for the matrix-free times is in doc/performance.md); the last line,
+// "RESULT key value ...", is what doc/benchmark_multigrid.sh reads. The program
+// checks nothing itself: the test multigrid_same_solution
+// (tests/CMakeLists.txt) compares the three.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature_lib.h>
