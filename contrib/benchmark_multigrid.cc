@@ -299,6 +299,18 @@ namespace
     void
     cell_matrix(const CellIterator &cell, FullMatrix<double> &local);
 
+    /**
+     * chi times the lumped mass of shape function i (the row sum of int
+     * u.v) on the cell fe_values was last reinit'ed on.
+     */
+    double
+    lumped_mass(unsigned int i) const;
+
+    /** The MatrixFree data of the active mesh, or of a level. */
+    std::shared_ptr<const MatrixFree<dim, double>>
+    make_matrix_free(const AffineConstraints<double> &constraints,
+                     unsigned int level = numbers::invalid_unsigned_int) const;
+
     /** C on the cell's faces on Gamma_C (zero elsewhere). */
     template <typename CellIterator>
     void
@@ -490,9 +502,34 @@ namespace
                               2. * mu * (eps_i * eps_j)) *
                              fe_values.JxW(q);
             }
-          // the lumped mass: the row sum of int u.v
-          local(i, i) += chi * fe_values.shape_value(i, q) * fe_values.JxW(q);
         }
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      local(i, i) += lumped_mass(i);
+  }
+
+  template <int dim>
+  double
+  MultigridBenchmark<dim>::lumped_mass(const unsigned int i) const
+  {
+    double m = 0.;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      m += fe_values.shape_value(i, q) * fe_values.JxW(q);
+    return chi * m;
+  }
+
+  template <int dim>
+  std::shared_ptr<const MatrixFree<dim, double>>
+  MultigridBenchmark<dim>::make_matrix_free(
+    const AffineConstraints<double> &constraints,
+    const unsigned int               level) const
+  {
+    typename MatrixFree<dim, double>::AdditionalData data;
+    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
+    data.mapping_update_flags  = update_gradients | update_JxW_values;
+    data.mg_level              = level;
+    auto matrix_free           = std::make_shared<MatrixFree<dim, double>>();
+    matrix_free->reinit(mapping, dof_handler, constraints, QGauss<1>(2), data);
+    return matrix_free;
   }
 
   template <int dim>
@@ -764,12 +801,7 @@ namespace
   MultigridBenchmark<dim>::assemble_matrix_free()
   {
     make_constraints_and_coefficients();
-    typename MatrixFree<dim, double>::AdditionalData data;
-    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
-    data.mapping_update_flags  = update_gradients | update_JxW_values;
-    auto matrix_free           = std::make_shared<MatrixFree<dim, double>>();
-    matrix_free->reinit(mapping, dof_handler, constraints, QGauss<1>(2), data);
-    mf_operator.initialize(matrix_free);
+    mf_operator.initialize(make_matrix_free(constraints));
 
     // the load and the lumped M as the program assembles them (without K),
     // and C condensed as the program condenses it
@@ -806,15 +838,9 @@ namespace
         AffineConstraints<double> level_constraints;
         level_constraints.reinit(relevant);
         level_constraints.close();
-        typename MatrixFree<dim, double>::AdditionalData data;
-        data.tasks_parallel_scheme =
-          MatrixFree<dim, double>::AdditionalData::none;
-        data.mapping_update_flags = update_gradients | update_JxW_values;
-        data.mg_level             = level;
-        auto matrix_free          = std::make_shared<MatrixFree<dim, double>>();
-        matrix_free->reinit(
-          mapping, dof_handler, level_constraints, QGauss<1>(2), data);
-        mf_levels[level].initialize(matrix_free, mg_constrained_dofs, level);
+        mf_levels[level].initialize(make_matrix_free(level_constraints, level),
+                                    mg_constrained_dofs,
+                                    level);
       }
 
     // each level's lumped chi M and C, on the level cells
@@ -830,10 +856,8 @@ namespace
           const unsigned int level = cell->level();
           cell->get_mg_dof_indices(indices);
           fe_values.reinit(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            for (unsigned int i = 0; i < n; ++i)
-              mass[level](indices[i]) +=
-                chi * fe_values.shape_value(i, q) * fe_values.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            mass[level](indices[i]) += lumped_mass(i);
           if (cell->at_boundary())
             add_contact_entries(cell, indices, nullptr, entries[level]);
         }
