@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(g++ cmake make libdeal.ii-dev libboost-program-options-dev catch2 numdiff
-  openmpi-bin)
+  openmpi-bin gnuplot-nox)
 
 missing=()
 for package in "${packages[@]}"; do

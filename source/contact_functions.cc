@@ -227,14 +227,118 @@ namespace dualcontact
         exit_no_equilibrium);
     if (capacity < 0.)
       return;
+    // friction resists a tangential force of at most `capacity` in any
+    // direction (a disc, not a square of the tangent axes): the length of
+    // the free tangential load counts
+    double squares = 0.;
     for (const double tangential : balance.tangential_loads)
-      if (tangential > capacity * (1. + 1e-10) + scale)
-        throw InputError("No equilibrium: the net tangential load " +
-                           std::to_string(tangential) +
-                           " exceeds what friction can resist, " +
-                           std::to_string(capacity) + " (" + capacity_text +
-                           "), and only friction holds the body along the "
-                           "obstacle.",
-                         exit_no_equilibrium);
+      squares += tangential * tangential;
+    const double tangential = std::sqrt(squares);
+    if (tangential > capacity * (1. + 1e-10) + scale)
+      throw InputError("No equilibrium: the net tangential load " +
+                         std::to_string(tangential) +
+                         (balance.tangential_loads.size() > 1 ?
+                            " (the length of its vector in the tangent "
+                            "plane)" :
+                            "") +
+                         " exceeds what friction can resist, " +
+                         std::to_string(capacity) + " (" + capacity_text +
+                         "), and only friction holds the body along the "
+                         "obstacle.",
+                       exit_no_equilibrium);
+  }
+
+  namespace
+  {
+    // (b - a) x (c - a): > 0 if a, b, c turn counter-clockwise
+    double
+    turn(const std::array<double, 2> &a,
+         const std::array<double, 2> &b,
+         const std::array<double, 2> &c)
+    {
+      return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+
+    // distance of p from the segment [a, b]
+    double
+    segment_distance(const std::array<double, 2> &p,
+                     const std::array<double, 2> &a,
+                     const std::array<double, 2> &b)
+    {
+      const double dx = b[0] - a[0], dy = b[1] - a[1];
+      const double length2 = dx * dx + dy * dy;
+      double       t       = 0.;
+      if (length2 > 0.)
+        t = std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2,
+                       0.,
+                       1.);
+      return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+    }
+  } // namespace
+
+  std::vector<std::array<double, 2>>
+  convex_hull(std::vector<std::array<double, 2>> points,
+              const unsigned int                 dims)
+  {
+    if (points.empty())
+      return points;
+    if (dims == 1)
+      {
+        const auto [low, high] =
+          std::minmax_element(points.begin(),
+                              points.end(),
+                              [](const auto &a, const auto &b) {
+                                return a[0] < b[0];
+                              });
+        return {std::array<double, 2>{{(*low)[0], 0.}},
+                std::array<double, 2>{{(*high)[0], 0.}}};
+      }
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    if (points.size() < 3)
+      return points;
+    // lower hull left to right, then upper hull right to left
+    std::vector<std::array<double, 2>> hull(2 * points.size());
+    std::size_t                        k = 0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      {
+        while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.)
+          --k;
+        hull[k++] = points[i];
+      }
+    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
+      {
+        while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.)
+          --k;
+        hull[k++] = points[i];
+      }
+    hull.resize(k - 1); // the last point is the first
+    return hull;
+  }
+
+  double
+  distance_outside_hull(const std::vector<std::array<double, 2>> &hull,
+                        const std::array<double, 2>              &point,
+                        const unsigned int                        dims)
+  {
+    if (hull.empty())
+      return std::numeric_limits<double>::infinity();
+    if (dims == 1)
+      return std::max(
+        {hull.front()[0] - point[0], point[0] - hull.back()[0], 0.});
+    if (hull.size() < 3) // a point or a segment
+      return segment_distance(point, hull.front(), hull.back());
+    bool inside = true;
+    for (std::size_t i = 0; i < hull.size(); ++i)
+      inside =
+        inside && turn(hull[i], hull[(i + 1) % hull.size()], point) >= 0.;
+    if (inside)
+      return 0.;
+    double distance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < hull.size(); ++i)
+      distance =
+        std::min(distance,
+                 segment_distance(point, hull[i], hull[(i + 1) % hull.size()]));
+    return distance;
   }
 } // namespace dualcontact

@@ -1,7 +1,5 @@
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/distributed/grid_refinement.h>
-
 #include <deal.II/dofs/dof_accessor.h>
 #include <deal.II/dofs/dof_tools.h>
 
@@ -26,9 +24,11 @@
 #include <dualcontact/refinement.h>
 #include <dualcontact/run_size.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 
 namespace dualcontact
 {
@@ -39,16 +39,24 @@ namespace dualcontact
       : mpi_communicator(mpi_communicator)
       , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       , parameters(parameters)
-      , scene(parameters)
+      // the scene reads the coarse mesh of a mesh file: its size is
+      // checked against the memory before it is built, as in make_grid()
+      , scene(
+          parameters,
+          [&parameters, mpi_communicator](const double n_cells) {
+            RunSizeCheck(parameters, mpi_communicator).check(n_cells, false);
+          })
       , computing_timer(mpi_communicator,
                         pcout,
                         TimerOutput::never,
                         TimerOutput::wall_times)
       , report(parameters, scene, computing_timer, mpi_communicator, out)
+      // Mesh smoothing: only the 2:1 balance at vertices, which p4est
+      // enforces on the whole forest. deal.II's other smoothing flags act
+      // on the refinement flags each rank sees, so they would make the
+      // adaptive meshes depend on the number of ranks.
       , triangulation(mpi_communicator,
-                      typename Triangulation<dim>::MeshSmoothing(
-                        Triangulation<dim>::smoothing_on_refinement |
-                        Triangulation<dim>::smoothing_on_coarsening))
+                      Triangulation<dim>::limit_level_difference_at_vertices)
       , mapping(1)
       , fe(FE_Q<dim>(1), dim)
       , dof_handler(triangulation)
@@ -97,6 +105,7 @@ namespace dualcontact
               }
             result.errors    = postprocess();
             result.reactions = compute_reactions(result.zone);
+            check_balance(result.reactions);
 
             output_results(cycle);
             report.end_cycle(result);
@@ -116,9 +125,10 @@ namespace dualcontact
   {
     TimerOutput::Scope t(computing_timer, "make grid");
     // The size of the finest mesh is checked against the memory before
-    // each refinement that builds the initial mesh, and once it is built:
-    // a scene refined far too often stops at once, not with std::bad_alloc
-    // after minutes.
+    // the coarse mesh is built (a box here, a mesh file's mesh in the
+    // constructor), before each refinement that builds the initial mesh,
+    // and once it is built: a scene refined far too often, or a box of far
+    // too many cells, stops at once, not with std::bad_alloc after minutes.
     const RunSizeCheck size(parameters, mpi_communicator);
     scene.create_mesh(triangulation, [&size](const double n_cells) {
       size.check(n_cells, false);
@@ -594,7 +604,132 @@ namespace dualcontact
       balance.normal_free ? -balance.load_away : -1.,
       why);
     dualcontact::check_equilibrium(balance, capacity, why);
+    if (balance.normal_free && plane)
+      check_moment(balance);
     return pressure;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_moment(const LoadBalance &balance) const
+  {
+    // Where only the contact holds the body (no prescribed displacement
+    // holds any rigid motion), the contact forces must also balance the
+    // loads' moment. On a plane they push along m at the nodes of Gamma_C;
+    // their friction parts lie in the plane, and where the nodes lie on it
+    // their moment about a point O of the plane is normal to it. So the
+    // loads' moment M about O, normal part aside, is balanced by pressures
+    // alone: their centre c = O + (M x m) / N must lie in the convex hull
+    // of the nodes, N the load toward the plane. Without friction the
+    // nodes may lie anywhere on Gamma_C (only their projections count);
+    // with friction off the plane a tangential force has a lever arm, and
+    // the check cannot decide (doc/theory.md §8).
+    double     measure = 0.;
+    const auto gram    = scene.rigid_motion_gram(triangulation, measure);
+    if (gram.frobenius_norm() > 1e-12 * std::max(measure, 1e-300))
+      return;
+    const double N = -balance.load_away;
+    if (!(N > 1e-10 * balance.resultant))
+      return;
+    const double         length = scene.characteristic_length();
+    const double         flat   = 1e-8 * length;
+    const Tensor<1, dim> m      = -contact_set.normal; // into the body
+    // O: the body's centre moved onto the plane along m
+    Point<dim> origin = scene.center();
+    origin -= scene.initial_gap(origin) * m;
+    bool                               off_plane = false;
+    std::vector<std::array<double, 2>> points;
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        const ContactNode<dim> &node = contact_set.nodes[s];
+        off_plane                    = off_plane || node.gap0 > flat;
+        std::array<double, 2> p{};
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          p[k] = contact_set.tangents[k] * (node.position - origin);
+        points.push_back(p);
+      }
+    if (Utilities::MPI::logical_or(off_plane, mpi_communicator) &&
+        contact_set.friction)
+      return;
+    // each rank's hull, then the hull of theirs
+    std::vector<double> local;
+    for (const auto &p : convex_hull(points, dim - 1))
+      local.insert(local.end(), p.begin(), p.end());
+    std::vector<std::array<double, 2>> hull;
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, local))
+      for (std::size_t i = 0; i + 1 < part.size(); i += 2)
+        hull.push_back(std::array<double, 2>{{part[i], part[i + 1]}});
+    hull = convex_hull(hull, dim - 1);
+
+    // M about O: b . R_k for the rigid rotations R_k(x) = e_k x (x - O)
+    // (in 2D the one about the normal of the plane)
+    const unsigned int n_rotations = dim == 2 ? 1 : 3;
+    Tensor<1, 3>       moment;
+    const IndexSet    &owned = locally_owned_dofs;
+    for (unsigned int k = 0; k < n_rotations; ++k)
+      {
+        TrilinosWrappers::MPI::Vector rotation(owned, mpi_communicator);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const Tensor<1, dim> r = cell->vertex(v) - origin;
+                Tensor<1, 3>         u; // (e_k x r), r in 3D
+                const unsigned int   axis = dim == 2 ? 2 : k;
+                const unsigned int   a = (axis + 1) % 3, b = (axis + 2) % 3;
+                const double r3[3] = {r[0], r[1], dim == 3 ? r[dim - 1] : 0.};
+                u[a]               = -r3[b];
+                u[b]               = r3[a];
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    const auto dof = cell->vertex_dof_index(v, c);
+                    if (owned.is_element(dof))
+                      rotation[dof] = u[c];
+                  }
+              }
+        rotation.compress(VectorOperation::insert);
+        moment[dim == 2 ? 2 : k] = system_rhs * rotation;
+      }
+    Tensor<1, 3> m3;
+    for (unsigned int c = 0; c < dim; ++c)
+      m3[c] = m[c];
+    const Tensor<1, 3>    offset = cross_product_3d(moment, m3) / N;
+    std::array<double, 2> centre{};
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        centre[k] += contact_set.tangents[k][c] * offset[c];
+    const double outside = distance_outside_hull(hull, centre, dim - 1);
+    if (!(outside > flat))
+      return;
+
+    // points of the plane as coordinates, for the message
+    const auto on_plane = [&](const std::array<double, 2> &p) {
+      Point<dim> x = origin;
+      for (unsigned int k = 0; k < dim - 1; ++k)
+        x += p[k] * contact_set.tangents[k];
+      std::ostringstream out;
+      out << "(";
+      for (unsigned int c = 0; c < dim; ++c)
+        out << (c > 0 ? ", " : "") << std::setprecision(4)
+            << (std::abs(x[c]) < flat ? 0. : x[c]);
+      return out.str() + ")";
+    };
+    std::ostringstream text;
+    text << "No equilibrium: the loads tip the body over. Only the contact "
+            "holds the body, and it can only push: the loads press it onto "
+            "the foundation with "
+         << format_number(N)
+         << ", but the line of action of their resultant meets the "
+            "foundation at "
+         << on_plane(centre) << ", " << format_number(outside)
+         << " outside the contact boundary's "
+         << (dim == 2 ? "extent on it, from " + on_plane(hull.front()) +
+                          " to " + on_plane(hull.back()) :
+                        std::string("convex hull on it"))
+         << ", so no contact pressure balances their moment. Reduce the "
+            "tangential loads or their lever arm, or hold the body "
+            "(<Boundary conditions/Conditions>).";
+    throw InputError(text.str(), exit_no_equilibrium);
   }
 
   template <int dim>
@@ -660,6 +795,12 @@ namespace dualcontact
                                  multipliers,
                                  scene.ids_with(BoundaryCondition::contact),
                                  *exact);
+        if (!std::isfinite(figures.pressure_error))
+          throw InputError("The entry <Exact solution/Contact pressure> is "
+                           "not a finite number (NaN or infinity) at some "
+                           "point of Gamma_C: '" +
+                             parameters.exact.contact_pressure + "'.",
+                           exit_invalid_value);
       }
     if (parameters.exact.contact_half_width > 0.)
       figures.half_width_error =
@@ -761,6 +902,30 @@ namespace dualcontact
   }
 
   template <int dim>
+  void
+  ContactProblem<dim>::check_balance(const ReactionFigures &reactions) const
+  {
+    // The converged solution balances the loads up to the solver
+    // tolerances (1e-14 to 1e-10 on the shipped scenes, doc/theory.md §8);
+    // a solve that stopped on its tests without balancing them (a proximal
+    // weight so large that v never moves, say) is not a solution.
+    const double tolerance =
+      std::clamp(1e2 * parameters.solver.uzawa_tolerance, 1e-6, 1e-2);
+    if (!(reactions.imbalance <= tolerance))
+      AssertThrow(
+        false,
+        ExcMessage("The solution does not balance the loads: contact "
+                   "force, reactions and applied loads sum to " +
+                   format_number(reactions.imbalance) +
+                   " of the largest of them (at most " +
+                   format_number(tolerance) + " for <Solver/Uzawa tolerance> " +
+                   format_number(parameters.solver.uzawa_tolerance) +
+                   "). The solver stopped without a solution: check "
+                   "<Solver/Proximal parameter> and <Solver/Augmentation "
+                   "parameter> (their defaults suit every scene)."));
+  }
+
+  template <int dim>
   PositionFigures
   ContactProblem<dim>::check_position()
   {
@@ -777,10 +942,17 @@ namespace dualcontact
   ContactProblem<dim>::postprocess() const
   {
     TimerOutput::Scope t(computing_timer, "postprocess");
-    return compute_error_norms(mapping,
-                               dof_handler,
-                               solution,
-                               scene.exact_displacement());
+    const ErrorNorms   norms = compute_error_norms(mapping,
+                                                 dof_handler,
+                                                 solution,
+                                                 scene.exact_displacement());
+    if (!std::isfinite(norms.l2) || !std::isfinite(norms.h1_semi))
+      throw InputError("The entry <Exact solution/Displacement> is not a "
+                       "finite number (NaN or infinity) at some point of "
+                       "the body: '" +
+                         parameters.exact.displacement + "'.",
+                       exit_invalid_value);
+    return norms;
   }
 
   template <int dim>
@@ -963,12 +1135,12 @@ namespace dualcontact
           if (cell->is_locally_owned())
             cell->set_refine_flag();
       }
-    else
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        triangulation,
-        refinement_indicator(),
-        refinement.refine_fraction,
-        refinement.coarsen_fraction);
+    else // the same cells on any number of ranks
+      mark_fixed_number(triangulation,
+                        refinement_indicator(),
+                        indicator_scale(mapping, dof_handler, solution),
+                        refinement.refine_fraction,
+                        refinement.coarsen_fraction);
 
     // Nested iteration: v and the multiplier fields go with the cells.
     // The inputs must live until the refinement is executed.

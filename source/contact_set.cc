@@ -7,6 +7,7 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/input_error.h>
 
+#include <cmath>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -146,15 +147,25 @@ namespace dualcontact
     friction_parameter.assign(nodes.size(), 0.);
     if (friction)
       {
-        double smallest = 0.;
+        double       smallest   = 0.;
+        unsigned int not_finite = 0;
         for (unsigned int s = 0; s < nodes.size(); ++s)
           {
             const double value =
               scene.friction_function()->value(nodes[s].position);
+            not_finite += !std::isfinite(value);
             smallest              = std::min(smallest, value);
             friction_parameter[s] = value;
             threshold[s]          = law->threshold(value, 0.);
           }
+        if (Utilities::MPI::sum(not_finite, comm) > 0)
+          throw InputError("The entry <Friction/" + law->parameter_entry() +
+                             "> is not a finite number (NaN or infinity) "
+                             "at " +
+                             std::to_string(
+                               Utilities::MPI::sum(not_finite, comm)) +
+                             " contact node(s).",
+                           exit_invalid_value);
         if (Utilities::MPI::min(smallest, comm) < 0.)
           throw InputError("The entry <Friction/" + law->parameter_entry() +
                              "> is negative at some contact node.",

@@ -176,7 +176,8 @@ main(int argc, char *argv[])
         }
       if (root)
         for (const std::string &warning : parameters.ineffective_entries())
-          std::cerr << "dualcontact: warning: " << warning << std::endl;
+          std::cerr << "dualcontact: warning: " << printable(warning)
+                    << std::endl;
 
       if (parameters.geometry.dimension == 2)
         run_scene<2>(parameters);
@@ -187,7 +188,7 @@ main(int argc, char *argv[])
     {
       if (root)
         {
-          std::cerr << "dualcontact: " << error.what() << std::endl;
+          std::cerr << "dualcontact: " << printable(error.what()) << std::endl;
           if (error.code == exit_usage)
             std::cerr << '\n' << usage();
         }

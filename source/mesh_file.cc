@@ -5,35 +5,23 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include <dualcontact/gmsh_scan.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/mesh_file.h>
 #include <dualcontact/obstacle.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace dualcontact
 {
   namespace
   {
-    /** What the elements of a Gmsh file are, counted by Gmsh's type number. */
-    struct MshContents
-    {
-      double                       version = 0.;
-      std::map<int, unsigned long> n_elements; // type -> count
-      static constexpr int line = 1, triangle = 2, quad = 3, tetrahedron = 4,
-                           hexahedron = 5, prism = 6, pyramid = 7, point = 15;
-      unsigned long
-      count(const int type) const
-      {
-        const auto it = n_elements.find(type);
-        return it == n_elements.end() ? 0 : it->second;
-      }
-    };
-
     /** "<Geometry/Mesh file> 'given' (the file path)" for messages. */
     std::string
     name_of(const GeometryParameters &geometry)
@@ -44,115 +32,6 @@ namespace dualcontact
       return "<Geometry/Mesh file> '" + given + "'" +
              (given == geometry.mesh_file ? "" :
                                             " (" + geometry.mesh_file + ")");
-    }
-
-    std::string
-    plural(const unsigned long n, const std::string &noun)
-    {
-      return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-    }
-
-    /**
-     * Scan the sections of a Gmsh ASCII file (format 2 or 4): its version
-     * and the count of each element type. deal.II's reader checks the
-     * format only with debug-mode assertions, and builds a simplex mesh
-     * from triangles, which p4est cannot take: both are found here first.
-     */
-    MshContents
-    scan_msh(std::istream &in, const GeometryParameters &geometry)
-    {
-      const std::string file       = name_of(geometry);
-      const auto        not_a_mesh = [&](const std::string &why) {
-        return InputError("The file " + file +
-                            " is not a Gmsh mesh that can "
-                                   "be read: " +
-                            why + ".",
-                          exit_cannot_read_file);
-      };
-      MshContents contents;
-      std::string word;
-      if (!(in >> word) || word != "$MeshFormat")
-        throw not_a_mesh("it does not begin with $MeshFormat (write it with "
-                         "Gmsh: 'gmsh -2 mesh.geo' or 'gmsh -3 mesh.geo')");
-      int file_type = -1, data_size = 0;
-      if (!(in >> contents.version >> file_type >> data_size))
-        throw not_a_mesh("its $MeshFormat line is not 'version 0 8'");
-      const bool format_2 = contents.version >= 2. && contents.version < 2.25;
-      const bool format_4 = contents.version >= 4. && contents.version < 4.15;
-      if (!format_2 && !format_4)
-        throw not_a_mesh("its format " +
-                         std::to_string(contents.version).substr(0, 3) +
-                         " is neither 2.2 nor 4.1 (Gmsh: "
-                         "'gmsh -format msh41' or 'Mesh.MshFileVersion = "
-                         "4.1;')");
-      if (file_type != 0)
-        throw not_a_mesh("it is binary; write it as ASCII ('Mesh.Binary = "
-                         "0;', or 'gmsh' without '-bin')");
-
-      bool        has_nodes = false, has_elements = false;
-      std::string line;
-      while (in >> word)
-        {
-          if (word == "$Nodes")
-            has_nodes = true;
-          if (word != "$Elements")
-            continue;
-          has_elements = true;
-          std::getline(in, line); // rest of the $Elements line
-          std::getline(in, line);
-          std::istringstream header(line);
-          unsigned long      n_blocks = 0, n_total = 0;
-          if (format_2)
-            {
-              header >> n_total;
-              n_blocks = 1;
-            }
-          else
-            header >> n_blocks >> n_total;
-          if (!header)
-            throw not_a_mesh("its $Elements section has no element count");
-          unsigned long n_read = 0;
-          for (unsigned long block = 0; block < n_blocks; ++block)
-            {
-              int           type = 0;
-              unsigned long n    = n_total;
-              if (format_4)
-                {
-                  int entity_dim = 0, entity_tag = 0;
-                  std::getline(in, line);
-                  std::istringstream block_header(line);
-                  if (!(block_header >> entity_dim >> entity_tag >> type >> n))
-                    throw not_a_mesh("an element block of $Elements is "
-                                     "malformed");
-                  contents.n_elements[type] += n;
-                }
-              for (unsigned long i = 0; i < n; ++i)
-                {
-                  if (!std::getline(in, line))
-                    throw not_a_mesh("it ends inside $Elements");
-                  if (format_2)
-                    {
-                      std::istringstream element(line);
-                      unsigned long      number = 0;
-                      if (!(element >> number >> type))
-                        throw not_a_mesh("the element line '" + line +
-                                         "' is malformed");
-                      ++contents.n_elements[type];
-                    }
-                }
-              n_read += n;
-            }
-          if (n_read != n_total)
-            throw not_a_mesh("its $Elements section holds " +
-                             std::to_string(n_read) + " elements, not the " +
-                             std::to_string(n_total) + " it announces");
-          if (!(in >> word) || word != "$EndElements")
-            throw not_a_mesh("its $Elements section does not end with "
-                             "$EndElements where it should");
-        }
-      if (!has_nodes || !has_elements)
-        throw not_a_mesh("it has no $Nodes or no $Elements section");
-      return contents;
     }
 
     /**
@@ -274,7 +153,9 @@ namespace dualcontact
 
   template <int dim>
   void
-  read_mesh_file(const GeometryParameters &geometry, Triangulation<dim> &mesh)
+  read_mesh_file(const GeometryParameters          &geometry,
+                 Triangulation<dim>                &mesh,
+                 const std::function<void(double)> &before_building)
   {
     const std::string     file = name_of(geometry);
     std::error_code       error;
@@ -291,8 +172,11 @@ namespace dualcontact
     std::stringstream text;
     text << in.rdbuf();
 
-    const MshContents contents = scan_msh(text, geometry);
+    const MshContents contents = scan_msh(text, name_of(geometry));
     check_elements<dim>(contents, geometry);
+    if (before_building)
+      before_building(static_cast<double>(contents.count(
+        dim == 2 ? MshContents::quad : MshContents::hexahedron)));
 
     text.clear();
     text.seekg(0);
@@ -485,9 +369,13 @@ namespace dualcontact
   }
 
   template void
-  read_mesh_file(const GeometryParameters &, Triangulation<2> &);
+  read_mesh_file(const GeometryParameters &,
+                 Triangulation<2> &,
+                 const std::function<void(double)> &);
   template void
-  read_mesh_file(const GeometryParameters &, Triangulation<3> &);
+  read_mesh_file(const GeometryParameters &,
+                 Triangulation<3> &,
+                 const std::function<void(double)> &);
   template std::set<types::boundary_id>
   boundary_ids(const Triangulation<2> &);
   template std::set<types::boundary_id>

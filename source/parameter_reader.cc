@@ -7,6 +7,8 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -18,6 +20,38 @@ namespace dualcontact
 
   namespace
   {
+    /**
+     * The first word of `value` (words separated by list and map separators
+     * and blanks) that reads as a number outside what a double holds with
+     * full precision: a nonzero magnitude below the smallest normal double
+     * (2.2e-308: 1e-320 is subnormal, 1e-400 underflows to zero) or above
+     * the largest (1.8e308). deal.II's patterns accept such words but its
+     * conversion refuses them; "" if there is none.
+     */
+    std::string
+    number_out_of_range(const std::string &value)
+    {
+      std::string word;
+      const auto  check = [&word]() {
+        if (word.empty())
+          return false;
+        char *end = nullptr;
+        errno     = 0;
+        std::strtod(word.c_str(), &end);
+        return end == word.c_str() + word.size() && errno == ERANGE;
+      };
+      for (const char c : value + " ")
+        if (std::string(",;:| \t").find(c) != std::string::npos)
+          {
+            if (check())
+              return word;
+            word.clear();
+          }
+        else
+          word += c;
+      return "";
+    }
+
     std::string
     lower_case(std::string text)
     {
@@ -504,6 +538,16 @@ namespace dualcontact
     return given;
   }
 
+  std::set<std::string>
+  ParameterReader::set_entries() const
+  {
+    std::set<std::string> names;
+    for (const Layer *layer : {scene.get(), overrides.get()})
+      for (const auto &[name, where] : layer->set_at)
+        names.insert(name);
+    return names;
+  }
+
   std::filesystem::path
   ParameterReader::folder_of(const std::string &entry) const
   {
@@ -727,6 +771,15 @@ namespace dualcontact
                          ".",
                        exit_unknown_entry);
 
+    const std::string out_of_range = number_out_of_range(value);
+    if (!out_of_range.empty())
+      throw InputError("Invalid value '" + value + "' for <" + name +
+                         ">: the number " + out_of_range +
+                         " is outside the range of double precision "
+                         "(magnitudes from 2.2e-308 to 1.8e+308, or 0); "
+                         "write 0, or rescale the units (" +
+                         where + ").",
+                       exit_invalid_value);
     for (const std::string &subsection : subsections)
       prm.enter_subsection(subsection);
     bool matches = true;

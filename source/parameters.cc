@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -319,6 +320,36 @@ namespace dualcontact
           }
       }
     return true;
+  }
+
+  bool
+  uses_coordinates(const std::string &expression, const unsigned int dim)
+  {
+    // the identifiers of the expression: a letter or '_', then letters,
+    // digits and '_' (a number's exponent, as in 1e-3, is not one)
+    std::string word;
+    bool        in_number = false;
+    for (const char c : expression + " ")
+      {
+        const bool letter =
+          std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+        const bool digit =
+          std::isdigit(static_cast<unsigned char>(c)) || c == '.';
+        if (word.empty() && !in_number && letter)
+          word += c;
+        else if (!word.empty() && (letter || digit))
+          word += c;
+        else if (word.empty() && (digit || (in_number && letter)))
+          in_number = true;
+        else
+          {
+            if (word == "x" || word == "y" || (dim == 3 && word == "z"))
+              return true;
+            word.clear();
+            in_number = digit;
+          }
+      }
+    return false;
   }
 
   // ------------------------------------------------------------ Geometry
@@ -803,14 +834,18 @@ namespace dualcontact
     prm.declare_entry(
       "Augmentation parameter",
       "10",
-      Patterns::Double(0.),
+      Patterns::Double(1e-3, 1e12),
       "r_rel [-], > 0: the augmentation parameter of the modified Lagrangian "
       "is r = r_rel (lambda + 2 mu) / h_C [stress/length], with h_C the "
       "smallest face diameter on the contact boundary and lambda + 2 mu the "
       "P-wave modulus (E (1 - nu) / ((1 + nu) (1 - 2 nu)); 1.35 E at nu = "
       "0.3), which follows the stiffness of nearly incompressible materials. "
       "Any r > 0 converges; larger r means fewer Uzawa steps and harder "
-      "Newton problems.");
+      "Newton problems (more Newton steps where many nodes slip), smaller r "
+      "more Uzawa steps (below 0.1, more than the default <Solver/Maximum "
+      "Uzawa steps>). From 1e-3 to 1e12: below, the contact terms vanish "
+      "beside the proximal term and the body drifts for thousands of "
+      "steps.");
     prm.declare_entry(
       "Tangential augmentation parameter",
       "auto",
@@ -827,11 +862,15 @@ namespace dualcontact
     prm.declare_entry(
       "Proximal parameter",
       "1e-3",
-      Patterns::Double(0.),
+      Patterns::Double(0., 1e3),
       "chi_rel [-], > 0: the proximal weight is chi = chi_rel E / L^2 "
       "[stress/length^2], with L the body's size (longest side, or radius). "
       "It makes each Uzawa step strongly convex, also when only contact "
-      "holds the body.");
+      "holds the body. At most 1e3: a proximal term that outweighs the "
+      "stiffness of coarse meshes (chi_rel 1e6 on 8 x 4 cells) holds v "
+      "where it is, and the Newton and Uzawa iterations stall; from 1 on "
+      "the Uzawa steps already stop before the solution is reached to the "
+      "tolerance (doc/robustness.md).");
     prm.declare_entry(
       "Uzawa tolerance",
       "1e-8",
@@ -880,7 +919,9 @@ namespace dualcontact
       "50",
       Patterns::Integer(1),
       "The Newton iteration gives up (with an error) after this many steps "
-      "in one Uzawa step [-].");
+      "in one Uzawa step [-], unless the line search is cutting its steps "
+      "short at changes of the node statuses (gross slip with a large r): "
+      "then it goes on, at most one more step per contact node.");
     prm.declare_entry(
       "Line search",
       "true",
@@ -1091,9 +1132,17 @@ namespace dualcontact
                      ";"),
       "Points of the body [length] at which the displacement [length] and "
       "the stress [stress] are written to probes.csv for every cycle, as "
-      "'x, y; x, y' (3D: 'x, y, z; ...'). Each must lie in the body (its "
-      "boundary included): a point outside is an input error, found on the "
-      "first mesh. Empty: no probes.");
+      "'x, y; x, y' (3D: 'x, y, z; ...'): one row per cycle and point, with "
+      "the columns cycle, probe (the point's number in this list, from 1), "
+      "x, y, (z), u_x, u_y, (u_z), sigma_xx, sigma_yy, sigma_zz, sigma_xy, "
+      "(sigma_xz, sigma_yz) and von_mises (in 2D sigma_zz is plane strain's "
+      "lambda tr(eps), and von_mises includes it). Each must lie in the body, "
+      "its boundary included: a point outside the mesh by at most the "
+      "distance of the nearest boundary face from the curved boundary at the "
+      "face's middle, plus 1e-6 of the face's size, counts as on the "
+      "boundary and is evaluated at the nearest point of the mesh; a point "
+      "farther outside is an input error, found on the first mesh. Empty: no "
+      "probes.");
     prm.leave_subsection();
   }
 
@@ -1260,10 +1309,11 @@ namespace dualcontact
     // defaults: in a 3D scene an entry it does not give takes these, so
     // that a 3D scene states only what differs (a foundation z = 0 with
     // the normal +z, the unit cube, shapes about the origin). Set into the
-    // handler, so that the listing (parameters.prm) repeats the run.
+    // handler, so that the listing (parameters.prm) repeats the run. An
+    // entry the scene sets keeps its value, even one equal to the 2D
+    // default: its count of values is then checked like any other's.
     void
-    apply_3d_defaults(ParameterHandler                         &prm,
-                      const std::map<std::string, std::string> &given)
+    apply_3d_defaults(ParameterHandler &prm, const std::set<std::string> &set)
     {
       prm.enter_subsection("Geometry");
       const bool three = prm.get_integer("Dimension") == 3;
@@ -1279,7 +1329,7 @@ namespace dualcontact
         {{"Foundation", "Normal", "0, 0, 1"}},
         {{"Obstacle", "Center", "0, 0, 0"}}};
       for (const auto &[subsection, entry, value] : defaults)
-        if (given.count(subsection + "/" + entry) == 0)
+        if (set.count(subsection + "/" + entry) == 0)
           {
             prm.enter_subsection(subsection);
             prm.set(entry, value);
@@ -1307,12 +1357,108 @@ namespace dualcontact
                 std::filesystem::absolute(file).lexically_normal().string());
       }
     prm.leave_subsection();
-    apply_3d_defaults(prm, given);
+    apply_3d_defaults(prm, reader.set_entries());
     std::ostringstream out;
     prm.print_parameters(out, ParameterHandler::PRM);
     parameter_file = out.str();
     parse_parameters(prm);
     geometry.mesh_file_given = mesh_file_given;
+  }
+
+  void
+  Parameters::check_magnitudes() const
+  {
+    // The solver scales E and the lengths out (r, chi and the tolerances
+    // are relative to them), so the units do not matter, within the range
+    // where their squares and products stay normal doubles.
+    const auto magnitude = [](const double       x,
+                              const std::string &entry,
+                              const std::string &unit,
+                              const std::string &example) {
+      if (!(std::abs(x) >= 1e-100 && std::abs(x) <= 1e100))
+        throw InputError("The entry <" + entry + "> = " + format_number(x) +
+                           " is outside the magnitudes 1e-100 to 1e100 " +
+                           unit +
+                           " that the solver's products of it can "
+                           "represent: use other units (" +
+                           example + ").",
+                         exit_invalid_value);
+    };
+    magnitude(material.youngs_modulus,
+              "Material/Young's modulus",
+              "[stress]",
+              "e.g. MPa or GPa instead of Pa");
+    const std::string lengths = "e.g. mm or km instead of m";
+    if (geometry.type == GeometryType::rectangle &&
+        geometry.lower_left.size() == geometry.upper_right.size())
+      for (std::size_t d = 0; d < geometry.lower_left.size(); ++d)
+        {
+          magnitude(geometry.upper_right[d] - geometry.lower_left[d],
+                    "Geometry/Upper right corner",
+                    "[length] (a side of the box)",
+                    lengths);
+          if (std::abs(geometry.lower_left[d]) > 1e100)
+            magnitude(geometry.lower_left[d],
+                      "Geometry/Lower left corner",
+                      "[length]",
+                      lengths);
+          if (std::abs(geometry.upper_right[d]) > 1e100)
+            magnitude(geometry.upper_right[d],
+                      "Geometry/Upper right corner",
+                      "[length]",
+                      lengths);
+        }
+
+    // deal.II's manifolds (the curved boundaries and the cells next to
+    // them) work with absolute tolerances of about 1e-10, and its
+    // transfinite interpolation in 3D loses its accuracy far from the
+    // origin against the cell size: radii below 1e-6 and, in 3D, centres
+    // farther than 100 radii from the origin fail inside deal.II while the
+    // mesh is refined.
+    const unsigned int dim    = geometry.dimension;
+    const auto         curved = [dim](const double               radius,
+                              const std::vector<double> &center,
+                              const std::string         &entry) {
+      if (radius < 1e-6)
+        throw InputError("The entry <" + entry +
+                           "> gives a curved boundary "
+                                   "the radius " +
+                           format_number(radius) +
+                           ", below 1e-6 [length]: deal.II's manifolds, "
+                                   "which refine curved boundaries, use absolute "
+                                   "tolerances of about 1e-10 and fail for such "
+                                   "small cells. Use smaller units (e.g. "
+                                   "micrometres instead of metres); the results do "
+                                   "not depend on them.",
+                         exit_invalid_value);
+      double distance = 0.;
+      for (const double c : center)
+        distance += c * c;
+      distance = std::sqrt(distance);
+      if (dim == 3 && distance > 100. * radius)
+        throw InputError("The entry <" + entry +
+                           "> puts the centre of a "
+                                   "curved boundary " +
+                           format_number(distance) +
+                           " from the origin, more than 100 times its "
+                                   "radius " +
+                           format_number(radius) +
+                           ": in 3D, deal.II's transfinite interpolation of "
+                                   "the cells next to it fails that far from the "
+                                   "origin. Move the origin near the body (shift the "
+                                   "centre, the foundation or obstacle, and the "
+                                   "expressions that use x, y, z).",
+                         exit_invalid_value);
+    };
+    if (geometry.type == GeometryType::half_disc ||
+        geometry.type == GeometryType::quarter_disc)
+      {
+        magnitude(geometry.radius, "Geometry/Radius", "[length]", lengths);
+        curved(geometry.radius, geometry.center, "Geometry/Radius");
+      }
+    if (geometry.type == GeometryType::mesh_file)
+      for (const BoundaryManifold &manifold : geometry.manifolds)
+        curved(manifold.radius, manifold.center, "Geometry/Manifolds");
   }
 
   void
@@ -1356,6 +1502,8 @@ namespace dualcontact
       }
     else if (geometry.type != GeometryType::mesh_file)
       need_dim(geometry.center, "Geometry/Center");
+
+    check_magnitudes();
 
     if (geometry.type == GeometryType::mesh_file &&
         geometry.mesh_file.find_first_not_of(" \t") == std::string::npos)

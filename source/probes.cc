@@ -1,3 +1,6 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/mpi_remote_point_evaluation.h>
 
 #include <deal.II/numerics/vector_tools_evaluate.h>
@@ -6,8 +9,11 @@
 #include <dualcontact/postprocess.h>
 #include <dualcontact/probes.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dualcontact
@@ -32,6 +38,169 @@ namespace dualcontact
       text << ')';
       return text.str();
     }
+
+    // a length in a message: 3 significant digits
+    std::string
+    length_text(const double x)
+    {
+      std::ostringstream text;
+      text << std::setprecision(3) << x;
+      return text.str();
+    }
+
+    /**
+     * Where a probe point is evaluated on a mesh: the point itself if a cell
+     * holds it, else the nearest point of the body, how far that is and how
+     * far a point may lie outside the body there and count as on its
+     * boundary.
+     */
+    template <int dim>
+    struct Location
+    {
+      bool       inside = true;
+      Point<dim> where;
+      double     distance  = 0.;
+      double     tolerance = 0.;
+    };
+
+    /**
+     * How far a point may lie outside the boundary face f of `cell` and
+     * count as on the boundary: the distance of the face's centre on the
+     * mesh (the mapped face, a chord of a curved boundary) from its centre
+     * on the boundary's manifold (the curve), where the chord is farthest
+     * from the curve, plus 1e-6 of the face's size, the tolerance within
+     * which RemotePointEvaluation finds a point in a cell anyway.
+     */
+    template <int dim>
+    double
+    face_tolerance(const Mapping<dim>                               &mapping,
+                   const typename Triangulation<dim>::cell_iterator &cell,
+                   const unsigned int                                f)
+    {
+      Point<dim> unit_centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        unit_centre[d] = 0.5;
+      unit_centre[f / 2] = f % 2;
+      const Point<dim> on_mesh =
+        mapping.transform_unit_to_real_cell(cell, unit_centre);
+      return on_mesh.distance(cell->face(f)->center(true)) +
+             1e-6 * cell->face(f)->diameter();
+    }
+
+    /**
+     * The nearest point of the body to `p`, which no cell holds: over the
+     * locally owned cells at the boundary, p's reference coordinates
+     * clamped to the unit cell and mapped back (a point of the face p lies
+     * beyond, the nearest one if the cell is a rectangle), or the cell's
+     * nearest vertex where the mapping cannot invert p; then the nearest
+     * over all ranks (the lowest rank's on a draw), the same on every rank.
+     * Collective.
+     */
+    template <int dim>
+    Location<dim>
+    nearest_point(const Point<dim>         &p,
+                  const Mapping<dim>       &mapping,
+                  const Triangulation<dim> &triangulation,
+                  const MPI_Comm            comm)
+    {
+      double     distance  = std::numeric_limits<double>::infinity();
+      double     tolerance = 0.;
+      Point<dim> nearest;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->at_boundary())
+          {
+            // the box of the vertices holds a Q1 cell: a lower bound
+            const BoundingBox<dim> box   = cell->bounding_box();
+            double                 below = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double outside = std::max(
+                  {box.lower_bound(d) - p[d], p[d] - box.upper_bound(d), 0.});
+                below += outside * outside;
+              }
+            if (std::sqrt(below) >= distance)
+              continue;
+
+            Point<dim> candidate;
+            double     candidate_tolerance = 0.;
+            try
+              {
+                const Point<dim> unit =
+                  mapping.transform_real_to_unit_cell(cell, p);
+                const Point<dim> clamped =
+                  GeometryInfo<dim>::project_to_unit_cell(unit);
+                candidate = mapping.transform_unit_to_real_cell(cell, clamped);
+                // the boundary faces the clamping moved the point onto
+                for (unsigned int d = 0; d < dim; ++d)
+                  for (unsigned int side = 0; side < 2; ++side)
+                    if ((side == 0 ? unit[d] < 0. : unit[d] > 1.) &&
+                        cell->face(2 * d + side)->at_boundary())
+                      candidate_tolerance =
+                        std::max(candidate_tolerance,
+                                 face_tolerance(mapping, cell, 2 * d + side));
+              }
+            catch (const typename Mapping<dim>::ExcTransformationFailed &)
+              {
+                candidate = cell->vertex(0);
+                for (const unsigned int v : cell->vertex_indices())
+                  if (p.distance(cell->vertex(v)) < p.distance(candidate))
+                    candidate = cell->vertex(v);
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->face(f)->at_boundary())
+                    candidate_tolerance =
+                      std::max(candidate_tolerance,
+                               face_tolerance(mapping, cell, f));
+              }
+            if (p.distance(candidate) < distance)
+              {
+                distance  = p.distance(candidate);
+                nearest   = candidate;
+                tolerance = candidate_tolerance;
+              }
+          }
+
+      std::vector<double> mine = {distance, tolerance};
+      for (unsigned int d = 0; d < dim; ++d)
+        mine.push_back(nearest[d]);
+      Location<dim> location;
+      location.inside   = false;
+      location.distance = std::numeric_limits<double>::infinity();
+      for (const std::vector<double> &other :
+           Utilities::MPI::all_gather(comm, mine))
+        if (other[0] < location.distance)
+          {
+            location.distance  = other[0];
+            location.tolerance = other[1];
+            for (unsigned int d = 0; d < dim; ++d)
+              location.where[d] = other[2 + d];
+          }
+      return location;
+    }
+
+    /**
+     * Where each of `points` is evaluated on the mesh of `triangulation`.
+     * Collective.
+     */
+    template <int dim>
+    std::vector<Location<dim>>
+    locate(const std::vector<Point<dim>> &points,
+           const Mapping<dim>            &mapping,
+           const Triangulation<dim>      &triangulation)
+    {
+      // every rank asks for every point: all ranks find the same
+      Utilities::MPI::RemotePointEvaluation<dim> cache;
+      cache.reinit(points, triangulation, mapping);
+      std::vector<Location<dim>> locations(points.size());
+      for (unsigned int i = 0; i < points.size(); ++i)
+        if (cache.point_found(i))
+          locations[i].where = points[i];
+        else
+          locations[i] = nearest_point(points[i],
+                                       mapping,
+                                       triangulation,
+                                       triangulation.get_communicator());
+      return locations;
+    }
   } // namespace
 
   template <int dim>
@@ -55,13 +224,17 @@ namespace dualcontact
   {
     if (points.empty())
       return;
-    Utilities::MPI::RemotePointEvaluation<dim> cache;
-    cache.reinit(points, triangulation, mapping);
+    const std::vector<Location<dim>> locations =
+      locate(points, mapping, triangulation);
     for (unsigned int i = 0; i < points.size(); ++i)
-      if (!cache.point_found(i))
+      if (!locations[i].inside &&
+          !(locations[i].distance <= locations[i].tolerance))
         throw InputError("The point " + point_text(points[i]) + " (probe " +
                            std::to_string(i + 1) +
-                           ") of <Output/Probe points> lies outside the body.",
+                           ") of <Output/Probe points> lies " +
+                           length_text(locations[i].distance) +
+                           " outside the body (the tolerance there is " +
+                           length_text(locations[i].tolerance) + ").",
                          exit_inconsistent);
   }
 
@@ -75,10 +248,18 @@ namespace dualcontact
   {
     if (points.empty())
       return;
+    // a point outside the body within the tolerance is evaluated at the
+    // nearest point of the body; one farther outside is not found
+    const std::vector<Location<dim>> locations =
+      locate(points, mapping, dof_handler.get_triangulation());
+    std::vector<Point<dim>> where = points;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      if (locations[i].distance <= locations[i].tolerance)
+        where[i] = locations[i].where;
     // every rank asks for every point: the values come back to all ranks
     Utilities::MPI::RemotePointEvaluation<dim> cache;
     const auto u = VectorTools::point_values<dim>(
-      mapping, dof_handler, solution, points, cache);
+      mapping, dof_handler, solution, where, cache);
     const auto grad =
       VectorTools::point_gradients<dim>(cache, dof_handler, solution);
     const double lambda = material.lambda();
@@ -96,7 +277,7 @@ namespace dualcontact
             value.stress_zz    = out_of_plane_stress(grad[i], lambda);
             value.von_mises = von_mises_stress(value.stress, value.stress_zz);
           }
-        else // a later mesh lost the point (a curved boundary): no value
+        else // a later mesh lost the point (a concave curved boundary)
           {
             const double nan      = std::numeric_limits<double>::quiet_NaN();
             value.displacement    = Tensor<1, dim>();

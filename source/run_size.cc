@@ -7,7 +7,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <sys/resource.h>
 #include <vector>
 
 namespace dualcontact
@@ -160,24 +162,61 @@ namespace dualcontact
     return size;
   }
 
-  double
-  available_memory(const MPI_Comm comm)
+  MemoryLimit
+  memory_limit(const MPI_Comm comm)
   {
-    if (const char *limit = std::getenv("DUALCONTACT_MEMORY_GB"))
-      return std::atof(limit) * gigabyte;
+    MemoryLimit limit;
+    if (const char *gigabytes = std::getenv("DUALCONTACT_MEMORY_GB"))
+      {
+        limit.bytes  = std::atof(gigabytes) * gigabyte;
+        limit.source = MemoryLimit::Source::environment;
+        return limit;
+      }
+    // this rank's address-space limit, less what it has mapped and does
+    // not use (infinite without a limit)
+    constexpr double unlimited     = std::numeric_limits<double>::infinity();
+    double           address_space = unlimited, usable = unlimited;
+    rlimit           rank_limit{};
+    if (getrlimit(RLIMIT_AS, &rank_limit) == 0 &&
+        rank_limit.rlim_cur != RLIM_INFINITY)
+      {
+        address_space       = static_cast<double>(rank_limit.rlim_cur);
+        const double unused = (read_number("/proc/self/status", "VmSize:") -
+                               read_number("/proc/self/status", "VmRSS:")) *
+                              1024.;
+        usable = std::max(0., address_space - std::max(0., unused));
+      }
+
     // one rank per node counts its node's memory
     MPI_Comm node;
     MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
-    const bool first_on_node = Utilities::MPI::this_mpi_process(node) == 0;
+    const bool   first_on_node = Utilities::MPI::this_mpi_process(node) == 0;
+    const double on_node =
+      Utilities::MPI::n_mpi_processes(node) * Utilities::MPI::min(usable, node);
     MPI_Comm_free(&node);
-    return Utilities::MPI::sum(first_on_node ? node_memory() : 0., comm);
+    const double machine     = first_on_node ? node_memory() : 0.;
+    const double usable_here = first_on_node ? std::min(machine, on_node) : 0.;
+    limit.bytes              = Utilities::MPI::sum(usable_here, comm);
+    if (limit.bytes < Utilities::MPI::sum(machine, comm))
+      {
+        limit.source                 = MemoryLimit::Source::address_space;
+        limit.address_space_per_rank = Utilities::MPI::min(address_space, comm);
+      }
+    return limit;
+  }
+
+  double
+  available_memory(const MPI_Comm comm)
+  {
+    return memory_limit(comm).bytes;
   }
 
   RunSizeCheck::RunSizeCheck(const Parameters &parameters, const MPI_Comm comm)
       : parameters(parameters)
       , comm(comm)
       , n_ranks(Utilities::MPI::n_mpi_processes(comm))
-      , memory(available_memory(comm))
+      , limit(memory_limit(comm))
+      , memory(limit.bytes)
   {}
 
   void
@@ -211,8 +250,12 @@ namespace dualcontact
            number(size.cells) + " cells and " + number(size.dofs) +
            " DoFs and need " + (exact ? "about " : "at least ") +
            gigabytes(size.memory) + " of the " + gigabytes(memory) +
-           (std::getenv("DUALCONTACT_MEMORY_GB") ?
+           (limit.source == MemoryLimit::Source::environment ?
               " that DUALCONTACT_MEMORY_GB allows" :
+            limit.source == MemoryLimit::Source::address_space ?
+              " that the address-space limit (ulimit -v) of " +
+                gigabytes(limit.address_space_per_rank) +
+                (n_ranks == 1 ? "" : " per rank") + " leaves" :
               " the machine has") +
            " (" + std::to_string(n_ranks) +
            (n_ranks == 1 ? " rank)" : " ranks)");

@@ -83,6 +83,21 @@ namespace dualcontact
                          exit_invalid_value);
       }
     restore_cerr();
+    // An expression without x, y, z is one number: NaN or infinity (0/0,
+    // 1/0) is refused here. One that depends on the position is checked
+    // where it is used (loads, friction at the contact nodes, errors).
+    if (!uses_coordinates(expression, dim))
+      {
+        Vector<double> values(n_components);
+        function->vector_value(Point<dim>(), values);
+        for (const double value : values)
+          if (!std::isfinite(value))
+            throw InputError("The entry <" + entry +
+                               "> is not a finite number (NaN or "
+                               "infinity): '" +
+                               expression + "'.",
+                             exit_invalid_value);
+      }
     return function;
   }
 
@@ -169,7 +184,8 @@ namespace dualcontact
   }
 
   template <int dim>
-  Scene<dim>::Scene(const Parameters &parameters)
+  Scene<dim>::Scene(const Parameters                  &parameters,
+                    const std::function<void(double)> &before_building)
       : parameters(parameters)
   {
     AssertThrow(parameters.geometry.dimension == dim,
@@ -180,7 +196,16 @@ namespace dualcontact
     // what the conditions must name.
     if (parameters.geometry.type == GeometryType::mesh_file)
       {
-        read_mesh_file(parameters.geometry, coarse_mesh);
+        // the file's cells, times 2^dim per initial global refinement
+        const double refined =
+          std::pow(std::pow(2., dim),
+                   parameters.refinement.initial_global_refinement);
+        read_mesh_file(parameters.geometry,
+                       coarse_mesh,
+                       [&before_building, refined](const double n_cells) {
+                         if (before_building)
+                           before_building(n_cells * refined);
+                       });
         check_mesh_against_parameters(parameters, coarse_mesh);
         const auto box   = GridTools::compute_bounding_box(coarse_mesh);
         mesh_lower_left  = box.get_boundary_points().first;
@@ -335,8 +360,23 @@ namespace dualcontact
     const std::function<void(double)>         &before_refining) const
   {
     const GeometryParameters &g = parameters.geometry;
+    // each refinement makes 2^dim children of a cell
+    const double children = std::pow(2., dim);
     if (g.type == GeometryType::rectangle)
       {
+        // The box's cells are known before it is built: the product of the
+        // subdivisions, taken in double (three of them overflow an
+        // integer long before the memory runs out).
+        if (before_refining)
+          {
+            double n_cells = 1.;
+            for (const unsigned int n : g.subdivisions)
+              n_cells *= n;
+            before_refining(
+              n_cells *
+              std::pow(children,
+                       parameters.refinement.initial_global_refinement));
+          }
         std::vector<unsigned int> repetitions(g.subdivisions.begin(),
                                               g.subdivisions.end());
         GridGenerator::subdivided_hyper_rectangle(triangulation,
@@ -422,8 +462,6 @@ namespace dualcontact
         triangulation.set_manifold(1, inner);
       }
 
-    // each refinement makes 2^dim children of a cell
-    const double children = std::pow(2., dim);
     if (before_refining)
       before_refining(
         triangulation.n_global_active_cells() *

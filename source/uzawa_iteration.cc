@@ -122,7 +122,8 @@ namespace dualcontact
       for (const TrilinosWrappers::MPI::Vector &w : *system.free_motions)
         change.add(-(w * change), w);
     const double v_norm_inf = v.linfty_norm();
-    record.change_v         = relative_change(change.l2_norm(), v.l2_norm());
+    record.norm_v           = v.l2_norm();
+    record.change_v         = relative_change(change.l2_norm(), record.norm_v);
     record.violation        = relative_change(violation, v_norm_inf);
     record.complementarity =
       relative_change(complementarity, l1_max * v_norm_inf);
@@ -170,6 +171,38 @@ namespace dualcontact
         return 0.;
       return std::pow(last / first, 1. / steps);
     }
+
+    /**
+     * Whether the second half of the history (at least 20 steps) shows a
+     * drift: v grows at each of its last 10 steps, and the steps
+     * |v_new - v| have not shrunk by a fifth since its start. A load that
+     * nothing balances moves the body by about the same amount at each
+     * proximal step (chi M (v_new - v) carries the unbalanced force), so v
+     * grows without bound and its changes relative to v fall only like
+     * 1/k; a converging iteration shrinks its steps geometrically.
+     */
+    bool
+    drifts(const std::vector<IterationRecord> &history)
+    {
+      const std::size_t n = history.size();
+      if (n < 20)
+        return false;
+      const IterationRecord &first = history[n / 2], &last = history[n - 1];
+      for (std::size_t i = n - 10; i < n; ++i)
+        if (!(history[i].norm_v > history[i - 1].norm_v))
+          return false;
+      return last.norm_v > first.norm_v &&
+             last.change_v * last.norm_v >= 0.8 * first.change_v * first.norm_v;
+    }
+
+    const std::string drift_cause =
+      "v drifts: it grows at every Uzawa step by steps that do not shrink, "
+      "which is what a load "
+      "that nothing balances does: check that the contact can carry the "
+      "loads (their resultant pushes the body onto the obstacle, and their "
+      "moment does not tip or roll it off), or hold the body by a "
+      "prescribed displacement (<Boundary conditions/Conditions>); more "
+      "steps or another <Solver/Augmentation parameter> cannot help";
   } // namespace
 
   template <int dim>
@@ -270,6 +303,9 @@ namespace dualcontact
     const IterationRecord &earlier =
       history[history.size() > 10 ? history.size() - 11 : 0];
     std::vector<std::string> causes;
+    const bool               drift = drifts(history);
+    if (drift)
+      causes.push_back(drift_cause);
     if (last.violation > 1e2 * tolerance &&
         last.violation > 0.9 * earlier.violation)
       causes.emplace_back(
@@ -281,7 +317,7 @@ namespace dualcontact
       causes.emplace_back(
         "the contact or stick/slip status of some nodes keeps switching: "
         "lower <Solver/Augmentation parameter>");
-    if (rate > 0.5 && rate < 0.999)
+    if (rate > 0.5 && rate < 0.999 && !drift)
       {
         std::ostringstream slow;
         slow << "slow but steady convergence, about "
@@ -336,8 +372,26 @@ namespace dualcontact
       {
         Timer timer(v.get_mpi_communicator(), true);
         v_previous = v;
-        const NewtonStatistics newton_statistics =
-          proximal_step(step_system, contact, v_previous, v, k, observer);
+        NewtonStatistics newton_statistics;
+        try
+          {
+            newton_statistics =
+              proximal_step(step_system, contact, v_previous, v, k, observer);
+          }
+        catch (const ExceptionBase &exception)
+          {
+            // a Newton failure while v drifts: the drift is the cause
+            if (!drifts(history))
+              throw;
+            std::ostringstream message;
+            exception.print_info(message);
+            std::string failure = Utilities::trim(message.str());
+            failure = failure.substr(0, failure.find(" Likely causes"));
+            AssertThrow(false,
+                        ExcMessage(
+                          "The contact solve cannot converge: " + drift_cause +
+                          ". It stopped here: " + failure));
+          }
         const auto      update_start = std::chrono::steady_clock::now();
         IterationRecord record       = update_multipliers(
           step_system, contact, v_previous, v, update_threshold);

@@ -2,6 +2,7 @@
 #
 #   cmake -DPROGRAM=<dualcontact> -DWORK_DIR=<dir>
 #         [-DPRM=<file.prm>] [-DARGS=<arg>|<arg>...]
+#         [-DLAUNCHER=<command>|<arg>...]
 #         [-DEXPECTED_EXIT=<n>] [-DSTDERR_REGEX=<re>] [-DSTDOUT_REGEX=<re>]
 #         [-DALLOWED_OUTPUT=<name>] [-DFILE=<path> -DFILE_REGEX=<re>]
 #         -P run_expect_error.cmake
@@ -18,7 +19,10 @@
 # leading comment says:
 #   # expected exit code: 5
 #   # expected message: <Material/Poisson's ratio>
-# ARGS separates several arguments by '|'.
+# ARGS separates several arguments by '|'. LAUNCHER, if given, comes in front
+# of the program and its arguments, e.g. a shell that lowers a limit first:
+#   -DLAUNCHER=sh|-c|ulimit -v 2000000 && exec "$0" "$@"
+# (the shell gets the program as $0 and its arguments as $@).
 
 cmake_minimum_required(VERSION 3.13)
 
@@ -31,6 +35,10 @@ endforeach()
 set(_arguments "")
 if(DEFINED ARGS)
   string(REPLACE "|" ";" _arguments "${ARGS}")
+endif()
+set(_launcher "")
+if(DEFINED LAUNCHER)
+  string(REPLACE "|" ";" _launcher "${LAUNCHER}")
 endif()
 
 if(DEFINED PRM)
@@ -71,10 +79,11 @@ endif()
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
-string(REPLACE ";" " " _command "${PROGRAM} ${_arguments}")
+string(REPLACE ";" " " _command "${_launcher} ${PROGRAM} ${_arguments}")
+string(STRIP "${_command}" _command)
 message(STATUS "in ${WORK_DIR}: ${_command}")
 execute_process(
-  COMMAND ${PROGRAM} ${_arguments}
+  COMMAND ${_launcher} ${PROGRAM} ${_arguments}
   WORKING_DIRECTORY "${WORK_DIR}"
   RESULT_VARIABLE _exit
   OUTPUT_VARIABLE _stdout

@@ -203,9 +203,28 @@ namespace dualcontact
     // off the foundation)
     bool   normal_free = false;
     double load_away   = 0.;
-    // each free tangential translation's net load (absolute value)
+    // each free tangential translation's net load; friction must resist
+    // their vector sum, whose length is what is checked
     std::vector<double> tangential_loads;
   };
+
+  /**
+   * The vertices of the convex hull of `points` in counter-clockwise order
+   * (Andrew's monotone chain); `dims` = 1: the points lie on a line (their
+   * second coordinates are ignored) and the hull is its two ends.
+   */
+  std::vector<std::array<double, 2>>
+  convex_hull(std::vector<std::array<double, 2>> points, unsigned int dims);
+
+  /**
+   * How far `point` lies outside the convex hull `hull` (as convex_hull()
+   * gives it): 0 inside or on it, else the distance to its nearest point.
+   * `dims` as for convex_hull(). An empty hull is infinitely far.
+   */
+  double
+  distance_outside_hull(const std::vector<std::array<double, 2>> &hull,
+                        const std::array<double, 2>              &point,
+                        unsigned int                              dims);
 
   /**
    * Check the necessary conditions of equilibrium: a free normal

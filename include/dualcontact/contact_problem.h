@@ -22,6 +22,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dualcontact/contact_functions.h>
 #include <dualcontact/contact_set.h>
 #include <dualcontact/contact_system.h>
 #include <dualcontact/elasticity.h>
@@ -249,6 +250,14 @@ namespace dualcontact
      * friction holds a tangential load (see ThresholdIteration), else 0. */
     double
     check_equilibrium() const;
+    /** Throws if only the contact holds the body on a plane and the loads'
+     * moment needs a centre of pressure outside the contact boundary. */
+    void
+    check_moment(const LoadBalance &balance) const;
+    /** Throws (a runtime failure) if the solution does not balance the
+     * loads to the solver tolerances. */
+    void
+    check_balance(const ReactionFigures &reactions) const;
     double
     net_load(const Tensor<1, dim> &direction) const;
     /** The rigid motions that neither the prescribed displacements nor the

@@ -92,6 +92,7 @@ namespace dualcontact
     double step_length     = 0.; // newton: alpha of the line search
     double change_l1       = 0.; // uzawa: |l1_new - l1| / |l1_new|
     double change_v        = 0.; // uzawa: |v_new - v| / |v_new|
+    double norm_v          = 0.; // uzawa: |v_new| (Euclidean, nodal)
     double violation       = 0.; // uzawa: max (v_n - g0)^+ / |v|_inf
     double complementarity = 0.; // uzawa: max l1 |g0 - v_n| / (max l1 |v|_inf)
     double change_l2       = 0.; // uzawa: |l2_new - l2| / max(|l2_new|,

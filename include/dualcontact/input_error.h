@@ -43,6 +43,33 @@ namespace dualcontact
   };
 
   /**
+   * `text` with its control characters written as escapes ("\r", "\t",
+   * "\x1b"), so that a message that quotes the input stays one line on
+   * the terminal whatever bytes the input holds.
+   */
+  inline std::string
+  printable(const std::string &text)
+  {
+    std::ostringstream out;
+    for (const char c : text)
+      {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\r')
+          out << "\\r";
+        else if (c == '\n')
+          out << "\\n";
+        else if (c == '\t')
+          out << "\\t";
+        else if (byte < 0x20 || byte == 0x7f)
+          out << "\\x" << std::hex << std::setw(2) << std::setfill('0')
+              << static_cast<unsigned int>(byte) << std::dec;
+        else
+          out << c;
+      }
+    return out.str();
+  }
+
+  /**
    * A number for a message, in scientific notation with three significant
    * digits (std::to_string writes 1e-10 as 0.000000).
    */

@@ -10,6 +10,7 @@
 
 #include <dualcontact/parameters.h>
 
+#include <functional>
 #include <set>
 #include <string>
 
@@ -24,11 +25,23 @@ namespace dualcontact
    * unreadable file, one that is not a Gmsh ASCII mesh of format 2 or 4
    * (exit 3); triangles or tetrahedra, with how to recombine them in Gmsh,
    * second-order elements, or no cells at all (exit 5); a mesh of the other
-   * dimension, or boundary faces in no physical group (exit 6).
+   * dimension, or boundary faces in no physical group (exit 6). A file
+   * that deal.II's reader would misread is refused first (exit 3): counts
+   * that do not match what follows them, malformed lines, node tags that
+   * repeat or that an element names but $Nodes does not define, an element
+   * with the wrong number of nodes or a repeated one, sections out of the
+   * order the reader takes them.
+   *
+   * `before_building`, if given, gets the number of cells of the file (its
+   * quadrilaterals in 2D, hexahedra in 3D) once the file is checked and
+   * before the mesh is built from it: the caller can stop a mesh too large
+   * for the memory.
    */
   template <int dim>
   void
-  read_mesh_file(const GeometryParameters &geometry, Triangulation<dim> &mesh);
+  read_mesh_file(const GeometryParameters          &geometry,
+                 Triangulation<dim>                &mesh,
+                 const std::function<void(double)> &before_building = {});
 
   /** The boundary ids the faces of `mesh` carry. */
   template <int dim>

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,13 @@ namespace dualcontact
      */
     std::map<std::string, std::string>
     given_entries() const;
+
+    /**
+     * Every entry the scene or an override set, whatever its value (also
+     * one set to its default), as "Subsection/Entry".
+     */
+    std::set<std::string>
+    set_entries() const;
 
     /**
      * The folder of the file that set `entry` ("Subsection/Entry"), for

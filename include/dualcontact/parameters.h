@@ -338,6 +338,15 @@ namespace dualcontact
     check_consistency() const;
 
     /**
+     * Refuse (exit 5) magnitudes the solver cannot represent: E and the
+     * body's lengths outside 1e-100 to 1e100, curved boundaries that
+     * deal.II's manifolds cannot refine (radius below 1e-6, and in 3D a
+     * centre farther than 100 radii from the origin).
+     */
+    void
+    check_magnitudes() const;
+
+    /**
      * One line per entry that was given but has no effect in this scene (a
      * friction coefficient without a friction law, refinement fractions with
      * global refinement, ...): which entry, why, and where it was set.
@@ -379,6 +388,13 @@ namespace dualcontact
   /** True if every component of the "a; b; c" expression is the number 0. */
   bool
   is_zero_expression(const std::string &expression);
+
+  /**
+   * True if the expression names a coordinate (x, y, and in 3D z) as a
+   * variable, i.e. if its value may depend on the position.
+   */
+  bool
+  uses_coordinates(const std::string &expression, unsigned int dim);
 } // namespace dualcontact
 
 #endif

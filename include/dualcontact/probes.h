@@ -63,9 +63,14 @@ namespace dualcontact
     }
 
     /**
-     * Throws InputError (exit_inconsistent), naming <Output/Probe points>
-     * and the first point that no cell of `triangulation` holds: a point
-     * outside the body. A point on the boundary is inside. Collective.
+     * Throws InputError (exit_inconsistent), naming <Output/Probe points>,
+     * the first point outside the body and how far outside it lies. A point
+     * on the boundary is inside, and so is a point that no cell holds but
+     * that lies within a tolerance of the mesh's boundary: the distance of
+     * the nearest boundary face (a chord of a curved boundary) from the
+     * boundary's manifold at the face's middle, plus 1e-6 of the face's
+     * size. A point on a curved boundary between two vertices lies outside
+     * the chord by less than that. Collective.
      */
     void
     check_inside(const Mapping<dim>       &mapping,
@@ -74,7 +79,10 @@ namespace dualcontact
     /**
      * The displacement and the stress sigma = lambda tr(eps) I + 2 mu eps at
      * every point (averaged over the cells that share a point on their
-     * common face), added to values() as the rows of `cycle`. `solution` is
+     * common face), added to values() as the rows of `cycle`. A point that
+     * no cell holds but that lies within the tolerance of check_inside() is
+     * evaluated at the nearest point of the mesh, found over all ranks; one
+     * farther outside (a mesh that lost the point) gets NaN. `solution` is
      * ghosted. Collective.
      */
     void

@@ -36,13 +36,39 @@ namespace dualcontact
                     const double       initial_cells,
                     const unsigned int n_ranks);
 
+  /** The memory a run may use, and what sets it. */
+  struct MemoryLimit
+  {
+    enum class Source
+    {
+      machine,       // the nodes' physical memory or container limit
+      address_space, // the ranks' address-space limit (ulimit -v)
+      environment    // DUALCONTACT_MEMORY_GB
+    };
+    double bytes  = 0.;
+    Source source = Source::machine;
+    // with Source::address_space: the smallest limit of a rank [bytes]
+    double address_space_per_rank = 0.;
+  };
+
   /**
-   * The memory the run may use [bytes]: the physical memory (MemTotal of
-   * /proc/meminfo, or a lower cgroup limit) of each node the ranks of
-   * `comm` run on, summed over the nodes. The environment variable
-   * DUALCONTACT_MEMORY_GB, if set, replaces it (a share of a node, or a
-   * test).
+   * The memory the run may use: on each node the ranks of `comm` run on,
+   * its physical memory (MemTotal of /proc/meminfo, or a lower cgroup
+   * limit), or, if lower, what the address-space limit (RLIMIT_AS, ulimit
+   * -v) of its ranks leaves them, summed over the nodes. That limit is each
+   * rank's own: a node's ranks may use the sum of theirs, taken as the
+   * number of ranks times the smallest one, since the run spreads evenly
+   * over its ranks and the rank with the smallest limit fails first. From
+   * a rank's limit goes the address space it has mapped but does not use
+   * (VmSize - VmRSS of /proc/self/status: shared libraries, reserved
+   * stacks and heaps, about 0.5 GB), which the estimate, of resident
+   * memory, does not count. The environment variable DUALCONTACT_MEMORY_GB,
+   * if set, replaces it all (a share of a node, or a test).
    */
+  MemoryLimit
+  memory_limit(const MPI_Comm comm);
+
+  /** memory_limit(comm).bytes. */
   double
   available_memory(const MPI_Comm comm);
 
@@ -75,6 +101,7 @@ namespace dualcontact
     const Parameters  &parameters;
     const MPI_Comm     comm;
     const unsigned int n_ranks;
+    const MemoryLimit  limit;
     const double       memory;
   };
 } // namespace dualcontact

@@ -75,15 +75,22 @@ namespace dualcontact
      * the coarse mesh of a mesh file (its size sets the lengths below).
      * Throws InputError naming the entry if an expression does not parse,
      * or the mesh file is bad or does not fit the entries (mesh_file.h).
+     * `before_building`, if given, gets the number of cells the mesh of a
+     * mesh file will have after the initial global refinement, once the
+     * file is checked and before the coarse mesh is built from it: the
+     * caller can stop a mesh too large for the memory.
      */
-    explicit Scene(const Parameters &parameters);
+    explicit Scene(const Parameters                  &parameters,
+                   const std::function<void(double)> &before_building = {});
 
     /**
      * Coarse mesh, manifolds, initial global refinement, pre-refinement.
      * `before_refining`, if given, gets the number of cells the mesh will
      * have at least after the next refinement (the global one, then each
-     * pre-refinement step), before that refinement is made: the caller can
-     * stop a mesh too large for the memory before it is built.
+     * pre-refinement step), before that refinement is made, and for a box
+     * what the global refinement will make of it before the box is built:
+     * the caller can stop a mesh too large for the memory before it is
+     * built.
      */
     void
     create_mesh(parallel::distributed::Triangulation<dim> &triangulation,

@@ -303,6 +303,52 @@ TEST_CASE("Equilibrium check: loads that only the contact could hold",
   // a load at round-off of the resultant counts as zero
   balance.tangential_loads = {1e-12};
   CHECK_NOTHROW(check_equilibrium(balance, 0., "frictionless contact"));
+  // 3D: friction resists a disc of tangential forces, so an oblique load
+  // (1.2, 1.2) exceeds the capacity 1.6 although each part stays below it
+  balance.normal_free      = true;
+  balance.load_away        = -10.;
+  balance.tangential_loads = {1.2, 1.2};
+  CHECK_THROWS_AS(check_equilibrium(balance, 1.6, "F N"), InputError);
+  balance.tangential_loads = {1.1, 1.1};
+  CHECK_NOTHROW(check_equilibrium(balance, 1.6, "F N"));
+}
+
+TEST_CASE("Convex hull of the contact nodes and the distance from it",
+          "[functions]")
+{
+  using P = std::array<double, 2>;
+  // 2D: an interval on the foundation line
+  const auto interval =
+    convex_hull({P{{0.5, 0.}}, P{{-1., 0.}}, P{{2., 0.}}}, 1);
+  REQUIRE(interval.size() == 2);
+  CHECK(interval.front()[0] == -1.);
+  CHECK(interval.back()[0] == 2.);
+  CHECK(distance_outside_hull(interval, P{{0., 0.}}, 1) == 0.);
+  CHECK(distance_outside_hull(interval, P{{2.5, 0.}}, 1) == Approx(0.5));
+  CHECK(distance_outside_hull(interval, P{{-1.25, 0.}}, 1) == Approx(0.25));
+
+  // 3D: the unit square's nodes on a 3 x 3 grid, with interior points
+  std::vector<P> grid;
+  for (unsigned int i = 0; i <= 2; ++i)
+    for (unsigned int j = 0; j <= 2; ++j)
+      grid.push_back(P{{0.5 * i, 0.5 * j}});
+  const auto square = convex_hull(grid, 2);
+  CHECK(square.size() == 4); // collinear edge midpoints dropped
+  CHECK(distance_outside_hull(square, P{{0.5, 0.5}}, 2) == 0.);
+  CHECK(distance_outside_hull(square, P{{1., 0.3}}, 2) == 0.); // on an edge
+  CHECK(distance_outside_hull(square, P{{1.2, 0.5}}, 2) == Approx(0.2));
+  CHECK(distance_outside_hull(square, P{{1.3, 1.4}}, 2) == Approx(0.5));
+  // a triangle: the point beyond its hypotenuse
+  const auto triangle = convex_hull({P{{0., 0.}}, P{{1., 0.}}, P{{0., 1.}}}, 2);
+  CHECK(distance_outside_hull(triangle, P{{0.6, 0.6}}, 2) ==
+        Approx(0.1 * std::sqrt(2.)));
+  CHECK(distance_outside_hull(triangle, P{{0.2, 0.2}}, 2) == 0.);
+  // degenerate hulls: a segment and a point; no node at all
+  const auto segment = convex_hull({P{{0., 0.}}, P{{1., 0.}}, P{{0.5, 0.}}}, 2);
+  CHECK(distance_outside_hull(segment, P{{0.5, 0.3}}, 2) == Approx(0.3));
+  CHECK(distance_outside_hull(convex_hull({P{{1., 1.}}}, 2), P{{1., 2.}}, 2) ==
+        Approx(1.));
+  CHECK(std::isinf(distance_outside_hull({}, P{{0., 0.}}, 2)));
 }
 
 TEST_CASE("Friction laws: the threshold from the pressure, written once",

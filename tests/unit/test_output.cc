@@ -7,6 +7,9 @@
 // the same.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
+
+#include <deal.II/fe/mapping_q.h>
 
 #include <dualcontact/contact_problem.h>
 
@@ -14,6 +17,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <regex>
 #include <sstream>
 
@@ -200,7 +204,8 @@ TEST_CASE("A probe outside the body is bad input, found before anything is "
   CHECK(caught.thrown);
   CHECK(caught.code == exit_inconsistent);
   CHECK(caught.message == "The point (3, 0.5) (probe 2) of <Output/Probe "
-                          "points> lies outside the body.");
+                          "points> lies 1 outside the body (the tolerance "
+                          "there is 5e-07).");
   MPI_Barrier(MPI_COMM_WORLD);
   CHECK(Utilities::MPI::max(int(std::filesystem::exists(directory)),
                             MPI_COMM_WORLD) == 0);
@@ -213,6 +218,88 @@ TEST_CASE("A probe outside the body is bad input, found before anything is "
   CHECK(three.code == exit_inconsistent);
   CHECK(three.message == "The point 1 of <Output/Probe points> has 3 "
                          "coordinates, not 2 (one per dimension).");
+}
+
+TEST_CASE("A probe on a curved boundary between two vertices, outside the "
+          "chord, is evaluated at the nearest point of the mesh; one beyond "
+          "the tolerance is refused",
+          "[output][probes][input]")
+{
+  // A half disc of radius 20 hanging from its clamped top, two global
+  // refinements: the boundary vertices near the bottom lie at 0 and 11.25
+  // degrees, the chord between them 0.0963 inside the circle at its middle.
+  // The points 3 degrees from the bottom: on the circle, 0.075 outside the
+  // chord; 0.5 beyond the circle; 0.2 inside it, inside the mesh.
+  const std::string scene = "subsection Geometry\n"
+                            "  set Type = half disc\n"
+                            "  set Center = 0, 0\n"
+                            "  set Radius = 20\n"
+                            "end\n"
+                            "subsection Boundary conditions\n"
+                            "  set Conditions = 1: fixed\n"
+                            "end\n"
+                            "subsection Loads\n"
+                            "  set Body force = 0; -1\n"
+                            "end\n"
+                            "subsection Refinement\n"
+                            "  set Initial global refinement = 2\n"
+                            "  set Number of cycles = 2\n"
+                            "end\n";
+  const double      angle = 3. * numbers::PI / 180.;
+  const auto        at    = [angle](const double r) {
+    return Point<2>(r * std::sin(angle), -r * std::cos(angle));
+  };
+  const Point<2> on_circle = at(20.), beyond = at(20.5), inside = at(19.8);
+
+  // no cell of the first mesh holds the point on the circle
+  {
+    Parameters parameters;
+    parameters.read_string(scene, "");
+    const Scene<2>                          geometry(parameters);
+    parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
+    geometry.create_mesh(triangulation);
+    const MappingQ<2>                        mapping(1);
+    Utilities::MPI::RemotePointEvaluation<2> cache;
+    cache.reinit({on_circle, inside}, triangulation, mapping);
+    CHECK(!cache.point_found(0));
+    CHECK(cache.point_found(1));
+
+    const Probes<2> accepted({{on_circle[0], on_circle[1]}});
+    CHECK_NOTHROW(accepted.check_inside(mapping, triangulation));
+    const Probes<2> both(
+      {{on_circle[0], on_circle[1]}, {beyond[0], beyond[1]}});
+    const CaughtError refused =
+      catch_input_error([&]() { both.check_inside(mapping, triangulation); });
+    CHECK(refused.code == exit_inconsistent);
+    CHECK(refused.message ==
+          "The point (1.07289, -20.4719) (probe 2) of <Output/Probe points> "
+          "lies 0.575 outside the body (the tolerance there is 0.0963).");
+  }
+
+  // the run: one value per cycle and probe, the same on every rank, finite,
+  // and near the value 0.2 inside (the displacement varies by 4e-4 of
+  // itself over 0.2 here)
+  std::ostringstream points;
+  points << std::setprecision(17) << "  set Probe points = " << on_circle[0]
+         << ", " << on_circle[1] << "; " << inside[0] << ", " << inside[1]
+         << "\n";
+  Run         run("", scene + overlay("Output", points.str()));
+  const auto &values = run.problem->get_probes().values();
+  REQUIRE(Utilities::MPI::min(values.size(), MPI_COMM_WORLD) == 4);
+  REQUIRE(Utilities::MPI::max(values.size(), MPI_COMM_WORLD) == 4);
+  for (unsigned int cycle = 0; cycle < 2; ++cycle)
+    {
+      const auto &on    = values[2 * cycle];
+      const auto &close = values[2 * cycle + 1];
+      CHECK(on.probe == 0);
+      CHECK(on.point == on_circle);
+      CHECK(std::isfinite(on.displacement.norm()));
+      CHECK(std::isfinite(on.von_mises));
+      CHECK(Utilities::MPI::max(on.displacement[1], MPI_COMM_WORLD) ==
+            Utilities::MPI::min(on.displacement[1], MPI_COMM_WORLD));
+      CHECK((on.displacement - close.displacement).norm() <
+            1e-2 * close.displacement.norm());
+    }
 }
 
 TEST_CASE("contact_NN.csv has one row per contact node along Gamma_C, "

@@ -483,6 +483,48 @@ TEST_CASE("A far too small augmentation parameter stops with an error that "
   CHECK(a.error.find("<Solver/Augmentation parameter>") != std::string::npos);
 }
 
+TEST_CASE("Gross slip under a large augmentation parameter: a clamped top "
+          "moved sideways converges with the default step limits",
+          "[robustness][solver]")
+{
+  // A 4 x 1 block (128 x 32 cells, 8514 DoFs), Coulomb F = 1, its top
+  // clamped and moved by (0.012, -0.0085): the base is at its sliding
+  // limit, |l2| = F l1 at every node (whether a node counts as stick or
+  // slip there is round-off, and differs between 1 and 2 ranks). With
+  // r_rel = 1e3 and 1e4 the line search stops at a kink at every Newton
+  // step, and the second Uzawa step takes 50-80 Newton steps, beyond the
+  // default limit of 50, which then applies only while the steps are not
+  // cut short. Measured: Uzawa 10 / 8 / 7 and Newton 31 / 102 / 125 for
+  // r_rel = 10 / 1e3 / 1e4, the same contact force to 1e-10.
+  const std::string block =
+    section("Geometry",
+            "  set Type = rectangle\n  set Upper right corner = 4, 1\n"
+            "  set Subdivisions = 128, 32") +
+    section("Material",
+            "  set Young's modulus = 1000\n  set Poisson's ratio = 0.3") +
+    section("Boundary conditions",
+            "  set Conditions = 2: contact, 3: fixed\n"
+            "  set Displacements = 3: 0.012; -0.0085") +
+    section("Friction", "  set Law = coulomb\n  set Coefficient = 1") +
+    one_cycle;
+  Run          reference("", block);
+  const double force = reference.last().zone.contact_force;
+  for (const double r : {1e3, 1e4})
+    {
+      const Attempt a =
+        attempt("",
+                block + section("Solver",
+                                "  set Augmentation parameter = " + number(r)));
+      INFO("r_rel = " << r << ": " << a.error);
+      REQUIRE(a.run);
+      CHECK(all_finite(*a.run));
+      CHECK(std::abs(a.run->last().zone.contact_force / force - 1.) < 1e-8);
+      const LawCheck law = check_law(*a.run);
+      CHECK(law.excess < 1e-8);
+      CHECK(law.threshold_gap < 1e-6);
+    }
+}
+
 TEST_CASE("Hertz with friction and the paper block in N-mm-MPa, N-m-Pa and "
           "with E = 1: same iterations, same dimensionless results",
           "[robustness][solver]")
