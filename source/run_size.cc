@@ -30,12 +30,11 @@ namespace dualcontact
     //      55,539 DoFs, 3043 MiB at 418,275 DoFs: 7278 bytes per DoF,
     //      140 MiB at 0;
     //   prm/paper_block.prm on 2 ranks: 178 MiB per rank at 0 DoFs.
-    // doc/robustness.md §9 found 2.1 kB per DoF at 4.8 million DoFs (2D,
-    // 2 ranks). Since the lumped proximal mass and the Newton matrix formed
-    // in place (doc/performance.md, session 10), 2D prm/hertz.prm and
-    // prm/hertz_friction.prm on 2 ranks (5 global cycles) take 1.49 and 1.56
-    // kB per DoF up to 1,207,298 DoFs (the peak is the AMG set-up). The 3D
-    // figure is the older one. Rounded up: the check is to refuse what
+    // With the lumped proximal mass and the Newton matrix formed in place
+    // (doc/performance.md), 2D prm/hertz.prm and prm/hertz_friction.prm on
+    // 2 ranks (5 global cycles) take 1.49 and 1.56 kB per DoF up to
+    // 1,207,298 DoFs (the peak is the AMG set-up). The 3D figure was
+    // measured with an assembled mass matrix and is an upper bound. Rounded up: the check is to refuse what
     // cannot fit, not to predict the peak to the megabyte.
     constexpr double bytes_per_dof_2d = 1700.;
     constexpr double bytes_per_dof_3d = 7300.;
