@@ -22,6 +22,7 @@
 #include <dualcontact/plausibility.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/refinement.h>
+#include <dualcontact/refinement_indicator.h>
 #include <dualcontact/run_size.h>
 
 #include <algorithm>
@@ -33,19 +34,19 @@
 namespace dualcontact
 {
   template <int dim>
-  ContactProblem<dim>::ContactProblem(const Parameters &parameters,
+  ContactProblem<dim>::ContactProblem(const Parameters &given_parameters,
                                       MPI_Comm          mpi_communicator,
                                       std::ostream     &out)
       : mpi_communicator(mpi_communicator)
       , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      , parameters(parameters)
+      , parameters(given_parameters)
       // the scene reads the coarse mesh of a mesh file: its size is
       // checked against the memory before it is built, as in make_grid()
-      , scene(
-          parameters,
-          [&parameters, mpi_communicator](const double n_cells) {
-            RunSizeCheck(parameters, mpi_communicator).check(n_cells, false);
-          })
+      , scene(parameters,
+              [this](const double n_cells) {
+                RunSizeCheck(parameters, this->mpi_communicator)
+                  .check(n_cells, false);
+              })
       , computing_timer(mpi_communicator,
                         pcout,
                         TimerOutput::never,
@@ -1031,7 +1032,8 @@ namespace dualcontact
 
     // what the adaptive strategies rank the cells by (the cells refined
     // next are those with the largest values)
-    if (parameters.refinement.strategy != RefinementStrategy::global)
+    if (!refinement_indicator_kind(parameters.refinement.strategy)
+           .refines_every_cell())
       data_out.add_data_vector(refinement_indicator(), "refinement_indicator");
     data_out.build_patches(mapping, fe.degree);
 
@@ -1102,24 +1104,24 @@ namespace dualcontact
     // computed once per solution: the output and the marking both use it
     if (indicator_valid)
       return indicator;
-    indicator_valid                        = true;
-    const RefinementParameters &refinement = parameters.refinement;
-    indicator = kelly_indicator(mapping, dof_handler, solution);
-    if (refinement.strategy == RefinementStrategy::contact &&
-        scene.effects().contact)
-      {
-        TrilinosWrappers::MPI::Vector multipliers, threshold;
-        multiplier_fields(multipliers, threshold);
-        add_contact_indicator(mapping,
+    indicator_valid = true;
+    const std::set<types::boundary_id> contact_ids =
+      scene.effects().contact ? scene.ids_with(BoundaryCondition::contact) :
+                                std::set<types::boundary_id>();
+    indicator =
+      compute_indicator<dim>({mapping,
                               dof_handler,
                               solution,
-                              multipliers,
                               contact_set,
-                              scene.ids_with(BoundaryCondition::contact),
-                              parameters.material,
-                              refinement.contact_weight,
-                              indicator);
-      }
+                              contact_ids,
+                              parameters,
+                              parameters.refinement.values,
+                              [this] {
+                                TrilinosWrappers::MPI::Vector multipliers,
+                                  threshold;
+                                multiplier_fields(multipliers, threshold);
+                                return multipliers;
+                              }});
     return indicator;
   }
 
@@ -1129,7 +1131,7 @@ namespace dualcontact
   {
     TimerOutput::Scope          t(computing_timer, "refine mesh");
     const RefinementParameters &refinement = parameters.refinement;
-    if (refinement.strategy == RefinementStrategy::global)
+    if (refinement_indicator_kind(refinement.strategy).refines_every_cell())
       {
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())

@@ -110,10 +110,8 @@ namespace dualcontact
         "The obstacle has no usable normal at " +
           std::to_string(Utilities::MPI::sum(no_normal, comm)) +
           " contact node(s): the gradient of its distance is zero or not "
-          "finite there (<Obstacle/" +
-          std::string(scene.obstacle()->name() == "distance" ? "Distance" :
-                                                               "Center") +
-          ">).",
+          "finite there (" +
+          scene.obstacle().entries() + ").",
         exit_invalid_value);
 
     // the direction of first contact: the mean normal of the nodes closest

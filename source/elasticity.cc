@@ -193,41 +193,6 @@ namespace dualcontact
           load[c], dof_handler.get_triangulation().get_communicator());
   }
 
-  template <int dim, typename VectorType>
-  void
-  assemble_load(const Mapping<dim>              &mapping,
-                const DoFHandler<dim>           &dof_handler,
-                const Scene<dim>                &scene,
-                const AffineConstraints<double> &constraints,
-                VectorType                      &load,
-                VectorType                      *mass)
-  {
-    CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
-    std::vector<types::global_dof_index> dof_indices(
-      dof_handler.get_fe().n_dofs_per_cell());
-    load = 0;
-    if (mass != nullptr)
-      *mass = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          local.assemble(cell, mass != nullptr);
-          cell->get_dof_indices(dof_indices);
-          // (with the cell matrix: the lifting of prescribed displacements)
-          constraints.distribute_local_to_global(local.rhs,
-                                                 dof_indices,
-                                                 load,
-                                                 local.matrix);
-          if (mass != nullptr)
-            constraints.distribute_local_to_global(local.mass,
-                                                   dof_indices,
-                                                   *mass);
-        }
-    load.compress(VectorOperation::add);
-    if (mass != nullptr)
-      mass->compress(VectorOperation::add);
-  }
-
   void
   LumpedMass::vmult(TrilinosWrappers::MPI::Vector       &dst,
                     const TrilinosWrappers::MPI::Vector &src) const
@@ -560,22 +525,7 @@ namespace dualcontact
     const bool,                                                                        \
     const Point<dim> &,                                                                \
     const double);                                                                     \
-  template class ElasticSolver<dim>;                                                   \
-  template void assemble_load<dim, TrilinosWrappers::MPI::Vector>(                     \
-    const Mapping<dim> &,                                                              \
-    const DoFHandler<dim> &,                                                           \
-    const Scene<dim> &,                                                                \
-    const AffineConstraints<double> &,                                                 \
-    TrilinosWrappers::MPI::Vector &,                                                   \
-    TrilinosWrappers::MPI::Vector *);                                                  \
-  template void                                                                        \
-  assemble_load<dim, LinearAlgebra::distributed::Vector<double>>(                      \
-    const Mapping<dim> &,                                                              \
-    const DoFHandler<dim> &,                                                           \
-    const Scene<dim> &,                                                                \
-    const AffineConstraints<double> &,                                                 \
-    LinearAlgebra::distributed::Vector<double> &,                                      \
-    LinearAlgebra::distributed::Vector<double> *);
+  template class ElasticSolver<dim>;
 
   DUALCONTACT_INSTANTIATE(2)
   DUALCONTACT_INSTANTIATE(3)

@@ -3,7 +3,15 @@
 // coefficient without a friction law is the common case: it looks like
 // friction and computes frictionless contact).
 #include <dualcontact/friction_law.h>
+#include <dualcontact/obstacle.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/refinement_indicator.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
 
 namespace dualcontact
 {
@@ -22,6 +30,31 @@ namespace dualcontact
     quoted(const std::string &value)
     {
       return "'" + value + "'";
+    }
+
+    // 'a', 'b' and 'c'
+    std::string
+    quoted_list(const std::vector<std::string> &names)
+    {
+      std::string text;
+      for (std::size_t i = 0; i < names.size(); ++i)
+        text += std::string(i == 0                ? "" :
+                            i + 1 == names.size() ? " and " :
+                                                    ", ") +
+                quoted(names[i]);
+      return text;
+    }
+
+    std::string
+    subsection_of(const std::string &entry)
+    {
+      return entry.substr(0, entry.find('/'));
+    }
+
+    std::string
+    name_of(const std::string &entry)
+    {
+      return entry.substr(entry.find('/') + 1);
     }
   } // namespace
 
@@ -65,49 +98,6 @@ namespace dualcontact
        {"Pre-refinement grading"},
        "it shrinks the distance from the second pre-refinement step on, and "
        "<Geometry/Pre-refinement steps> is 1"},
-      {!contact,
-       "Foundation",
-       {"Point", "Normal"},
-       "no boundary id has the condition 'contact'"},
-      {!contact,
-       "Obstacle",
-       {"Type", "Center", "Radius", "Axis", "Distance", "Displacement"},
-       "no boundary id has the condition 'contact'"},
-      {contact && obstacle.type != "plane",
-       "Foundation",
-       {"Point", "Normal"},
-       "<Obstacle/Type> is " + quoted(obstacle.type) +
-         " (the foundation is the plane obstacle)"},
-      {contact && (obstacle.type == "plane" || obstacle.type == "distance"),
-       "Obstacle",
-       {"Center", "Radius", "Axis"},
-       "<Obstacle/Type> is " + quoted(obstacle.type) +
-         " (they are for 'cylinder' and 'sphere')"},
-      {contact && obstacle.type != "plane" && obstacle.type != "distance" &&
-         (geometry.dimension == 2 || obstacle.type == "sphere"),
-       "Obstacle",
-       {"Axis"},
-       "it is the axis of a cylinder in 3D"},
-      {contact && obstacle.type != "distance",
-       "Obstacle",
-       {"Distance"},
-       "<Obstacle/Type> is " + quoted(obstacle.type) +
-         " (it is for 'distance')"},
-      {law_entry.empty(),
-       "Friction",
-       {"Coefficient", "Threshold"},
-       "<Friction/Law> is " + quoted(friction.law) +
-         " (frictionless); set <Friction/Law> to use friction"},
-      {law_entry == "Threshold",
-       "Friction",
-       {"Coefficient"},
-       "the law " + quoted(friction.law) +
-         " takes <Friction/Threshold> (the coefficient is for 'coulomb')"},
-      {law_entry == "Coefficient",
-       "Friction",
-       {"Threshold"},
-       "the law " + quoted(friction.law) +
-         " takes <Friction/Coefficient> (the threshold is for 'given')"},
       {contact && law_entry.empty(),
        "Solver",
        {"Tangential augmentation parameter"},
@@ -141,18 +131,15 @@ namespace dualcontact
        {"Strategy",
         "Refine fraction",
         "Coarsen fraction",
-        "Contact indicator weight",
         "Nested iteration",
         "Compare with cold start"},
        "<Refinement/Number of cycles> is 1, so the mesh is never refined"},
-      {!one_mesh && refinement.strategy == RefinementStrategy::global,
+      {!one_mesh &&
+         refinement_indicator_kind(refinement.strategy).refines_every_cell(),
        "Refinement",
-       {"Refine fraction", "Coarsen fraction", "Contact indicator weight"},
-       "<Refinement/Strategy> is 'global' (every cell is refined)"},
-      {!one_mesh && refinement.strategy == RefinementStrategy::kelly,
-       "Refinement",
-       {"Contact indicator weight"},
-       "<Refinement/Strategy> is 'kelly' (the weight is for 'contact')"},
+       {"Refine fraction", "Coarsen fraction"},
+       "<Refinement/Strategy> is " + quoted(refinement.strategy) +
+         " (every cell is refined)"},
       {!one_mesh && !refinement.nested_iteration,
        "Refinement",
        {"Compare with cold start"},
@@ -176,17 +163,109 @@ namespace dualcontact
        "<Friction/Law> is " + quoted(friction.law) +
          " (frictionless): there is no stick zone"}};
 
-    std::vector<std::string> warnings;
+    // the entries of the obstacle kinds the scene's kind does not read
+    const unsigned int    dim              = geometry.dimension;
+    const auto            readers          = obstacle_entry_readers(dim);
+    const auto            readers_2d3d     = obstacle_entry_readers(5 - dim);
+    std::set<std::string> obstacle_entries = {"Obstacle/Type",
+                                              "Obstacle/Displacement"};
+    for (const auto *map : {&readers, &readers_2d3d})
+      for (const auto &[entry, kinds] : *map)
+        obstacle_entries.insert(entry);
+    for (const std::string &entry : obstacle_entries)
+      {
+        const auto here = readers.find(entry);
+        if (!contact)
+          rules.push_back({true,
+                           subsection_of(entry),
+                           {name_of(entry)},
+                           "no boundary id has the condition 'contact'"});
+        else if (here == readers.end() && readers_2d3d.count(entry) > 0)
+          rules.push_back({true,
+                           subsection_of(entry),
+                           {name_of(entry)},
+                           "<Obstacle/Type> is " + quoted(obstacle.type) +
+                             " in " + std::to_string(dim) + "D (it is for " +
+                             quoted_list(readers_2d3d.at(entry)) + " in " +
+                             std::to_string(5 - dim) + "D)"});
+        else if (here != readers.end() &&
+                 std::find(here->second.begin(),
+                           here->second.end(),
+                           obstacle.type) == here->second.end())
+          rules.push_back({true,
+                           subsection_of(entry),
+                           {name_of(entry)},
+                           "<Obstacle/Type> is " + quoted(obstacle.type) +
+                             " (it is for " + quoted_list(here->second) + ")"});
+      }
+
+    // the entries of the refinement indicators: without refinement none
+    // is read, else those of the scene's indicator
+    std::map<std::string, std::vector<std::string>> indicator_entries;
+    for (const std::string &name : refinement_indicator_names())
+      for (const std::string &entry : refinement_indicator_kind(name).entries)
+        indicator_entries[entry].push_back(name);
+    const auto &own = refinement_indicator_kind(refinement.strategy).entries;
+    for (const auto &[entry, names] : indicator_entries)
+      if (one_mesh)
+        rules.push_back({true,
+                         subsection_of(entry),
+                         {name_of(entry)},
+                         "<Refinement/Number of cycles> is 1, so the mesh is "
+                         "never refined"});
+      else if (std::find(own.begin(), own.end(), entry) == own.end())
+        rules.push_back({true,
+                         subsection_of(entry),
+                         {name_of(entry)},
+                         "<Refinement/Strategy> is " +
+                           quoted(refinement.strategy) + " (it is for " +
+                           quoted_list(names) + ")"});
+
+    // the entries of the friction laws the scene's law does not read
+    for (const auto &[entry, laws] : friction_law_entries())
+      if (entry != law_entry)
+        rules.push_back(
+          {true,
+           "Friction",
+           {entry},
+           law_entry.empty() ?
+             "<Friction/Law> is " + quoted(friction.law) +
+               " (frictionless); set <Friction/Law> to use friction" :
+             "the law " + quoted(friction.law) + " takes <Friction/" +
+               law_entry + "> (<Friction/" + entry + "> is for " +
+               quoted_list(laws) + ")"});
+
+    // in the order the input gives the entries: by file, then line (the
+    // overrides of --set, which have no line, last)
+    std::vector<std::tuple<std::string, long, std::string>> found;
     for (const Rule &rule : rules)
       if (rule.applies)
         for (const std::string &entry : rule.entries)
           {
             const std::string name = rule.subsection + "/" + entry;
             const auto        it   = given.find(name);
-            if (it != given.end())
-              warnings.push_back("<" + name + "> has no effect: " + rule.why +
-                                 " (" + it->second + ").");
+            if (it == given.end())
+              continue;
+            const std::string &where = it->second;
+            const auto         colon = where.rfind(':');
+            const bool         line =
+              colon != std::string::npos && colon + 1 < where.size() &&
+              where.find_first_not_of("0123456789", colon + 1) ==
+                std::string::npos;
+            found.emplace_back(line ? where.substr(0, colon) : "\x7f" + where,
+                               line ? std::stol(where.substr(colon + 1)) : 0,
+                               "<" + name + "> has no effect: " + rule.why +
+                                 " (" + where + ").");
           }
+    std::stable_sort(found.begin(),
+                     found.end(),
+                     [](const auto &a, const auto &b) {
+                       return std::tie(std::get<0>(a), std::get<1>(a)) <
+                              std::tie(std::get<0>(b), std::get<1>(b));
+                     });
+    std::vector<std::string> warnings;
+    for (const auto &item : found)
+      warnings.push_back(std::get<2>(item));
     return warnings;
   }
 } // namespace dualcontact

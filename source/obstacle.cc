@@ -1,47 +1,142 @@
+#include <deal.II/base/utilities.h>
+
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/registry.h>
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace dualcontact
 {
-  namespace
-  {
-    using Factories = std::pair<ObstacleFactory<2>, ObstacleFactory<3>>;
-  } // namespace
-
   bool
-  register_obstacle(const std::string &name,
-                    ObstacleFactory<2> factory_2d,
-                    ObstacleFactory<3> factory_3d)
+  register_obstacle(const std::string &name, ObstacleKind kind)
   {
-    Registry<Factories>::instance().add(name,
-                                        {std::move(factory_2d),
-                                         std::move(factory_3d)});
+    Registry<ObstacleKind>::instance().add(name, std::move(kind));
     return true;
   }
 
   std::vector<std::string>
   obstacle_names()
   {
-    return Registry<Factories>::instance().names();
+    return Registry<ObstacleKind>::instance().names();
+  }
+
+  const ObstacleKind &
+  obstacle_kind(const std::string &name)
+  {
+    const ObstacleKind *kind = Registry<ObstacleKind>::instance().find(name);
+    if (kind == nullptr)
+      throw InputError("There is no obstacle called '" + name +
+                         "' (<Obstacle/Type>).",
+                       exit_invalid_value);
+    return *kind;
+  }
+
+  std::map<std::string, std::vector<std::string>>
+  obstacle_entry_readers(const unsigned int dim)
+  {
+    std::map<std::string, std::vector<std::string>> readers;
+    for (const std::string &name : obstacle_names())
+      if (obstacle_kind(name).entries != nullptr)
+        for (const std::string &entry : obstacle_kind(name).entries(dim))
+          readers[entry].push_back(name);
+    return readers;
+  }
+
+  void
+  declare_obstacle_parameters(ParameterHandler &prm)
+  {
+    std::string names, help;
+    for (const std::string &name : obstacle_names())
+      {
+        names += (names.empty() ? "" : "|") + name;
+        help += " '" + name + "': " + obstacle_kind(name).help;
+      }
+    prm.enter_subsection("Obstacle");
+    prm.declare_entry("Type",
+                      "plane",
+                      Patterns::Selection(names),
+                      "The rigid obstacle on Gamma_C." + help +
+                        " Gap and normal are taken at each contact node's "
+                        "position before deformation (small displacements).");
+    prm.declare_entry("Displacement",
+                      "",
+                      Patterns::List(Patterns::Double(), 0, 3),
+                      "A rigid translation U of the obstacle, prescribed "
+                      "(e.g. an indentation depth: U = 0, -0.01 moves it "
+                      "down by 0.01) [length], one value per dimension; "
+                      "empty: it stays where it is. The force on the "
+                      "obstacle is reported.");
+    prm.leave_subsection();
+
+    // each kind's entries, once per declaring function (kinds of one file
+    // may share one)
+    std::vector<void (*)(ParameterHandler &)> declared;
+    for (const std::string &name : obstacle_names())
+      {
+        const auto declare = obstacle_kind(name).declare_parameters;
+        if (declare != nullptr &&
+            std::find(declared.begin(), declared.end(), declare) ==
+              declared.end())
+          {
+            declare(prm);
+            declared.push_back(declare);
+          }
+      }
+  }
+
+  void
+  ObstacleParameters::declare_parameters(ParameterHandler &prm)
+  {
+    declare_obstacle_parameters(prm);
+  }
+
+  void
+  ObstacleParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    const unsigned int dim = prm.get_integer("Dimension");
+    prm.leave_subsection();
+    prm.enter_subsection("Obstacle");
+    type         = prm.get("Type");
+    displacement = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Displacement"), ','));
+    prm.leave_subsection();
+    obstacle_kind(type); // InputError for a name nobody registered
+    // every kind's entries, so that a program may change the kind
+    std::vector<std::string> entries;
+    for (const auto &[entry, kinds] : obstacle_entry_readers(dim))
+      entries.push_back(entry);
+    values = read_entry_values(prm, entries);
   }
 
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
   create_obstacle(const Parameters &parameters, const double length)
   {
-    const Factories *factories =
-      Registry<Factories>::instance().find(parameters.obstacle.type);
-    if (factories == nullptr)
-      throw InputError("There is no obstacle called '" +
-                         parameters.obstacle.type + "' (<Obstacle/Type>).",
-                       exit_invalid_value);
+    const ObstacleKind &kind = obstacle_kind(parameters.obstacle.type);
     if constexpr (dim == 2)
-      return factories->first(parameters, length);
+      return kind.create_2d(parameters.obstacle.values, parameters, length);
     else
-      return factories->second(parameters, length);
+      return kind.create_3d(parameters.obstacle.values, parameters, length);
+  }
+
+  std::string
+  obstacle_entries_text(const Parameters &parameters)
+  {
+    const ObstacleKind      &kind = obstacle_kind(parameters.obstacle.type);
+    std::vector<std::string> entries;
+    if (kind.entries != nullptr)
+      entries = kind.entries(parameters.geometry.dimension);
+    std::string text;
+    for (std::size_t i = 0; i < entries.size(); ++i)
+      text += std::string(i == 0                  ? "" :
+                          i + 1 == entries.size() ? " and " :
+                                                    ", ") +
+              "<" + entries[i] + ">";
+    return text;
   }
 
   template <int dim>

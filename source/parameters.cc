@@ -6,6 +6,7 @@
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_reader.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/refinement_indicator.h>
 
 #include <algorithm>
 #include <array>
@@ -202,10 +203,9 @@ namespace dualcontact
     }
 
     /**
-     * The friction law takes its parameter from one entry (<Friction/
-     * Coefficient> or <Friction/Threshold>). Giving only the other one is
-     * a mix-up of the two laws: the run would be frictionless, which is
-     * never what was meant.
+     * The friction law takes its parameter from one entry of its own.
+     * Giving only another law's entry is a mix-up of the laws: the run
+     * would be frictionless, which is never what was meant.
      */
     void
     check_friction_entries(const FrictionParameters                 &friction,
@@ -215,21 +215,19 @@ namespace dualcontact
         create_friction_law(friction.law)->parameter_entry();
       if (used.empty() || given.count("Friction/" + used) > 0)
         return;
-      for (const std::string other : {"Coefficient", "Threshold"})
+      for (const auto &[other, laws] : friction_law_entries())
         if (other != used && given.count("Friction/" + other) > 0)
           {
-            std::string  laws;
-            unsigned int n_laws = 0;
-            for (const std::string &name : friction_law_names())
-              if (create_friction_law(name)->parameter_entry() == other)
-                laws += (n_laws++ == 0 ? "'" : ", '") + name + "'";
+            std::string names;
+            for (std::size_t i = 0; i < laws.size(); ++i)
+              names += (i == 0 ? "'" : ", '") + laws[i] + "'";
             throw InputError("The friction law '" + friction.law +
                                "' needs <Friction/" + used +
                                ">, which is not given (0 by default: no "
                                "friction); <Friction/" +
                                other + "> (" + given.at("Friction/" + other) +
-                               ") is for the law" + (n_laws > 1 ? "s " : " ") +
-                               laws + ".",
+                               ") is for the law" +
+                               (laws.size() > 1 ? "s " : " ") + names + ".",
                              exit_inconsistent);
           }
     }
@@ -282,21 +280,6 @@ namespace dualcontact
           return "sphere";
         case Kind::cylinder:
           return "cylinder";
-      }
-    return "";
-  }
-
-  std::string
-  to_string(const RefinementStrategy strategy)
-  {
-    switch (strategy)
-      {
-        case RefinementStrategy::global:
-          return "global";
-        case RefinementStrategy::kelly:
-          return "kelly";
-        case RefinementStrategy::contact:
-          return "contact";
       }
     return "";
   }
@@ -642,99 +625,6 @@ namespace dualcontact
     prm.leave_subsection();
   }
 
-  // ------------------------------------------------------------ Foundation
-
-  void
-  ObstacleParameters::declare_parameters(ParameterHandler &prm)
-  {
-    // the plane keeps its historical subsection, so that older scenes run
-    prm.enter_subsection("Foundation");
-    prm.declare_entry("Point",
-                      "0, 0",
-                      Patterns::List(Patterns::Double(), 2, 3),
-                      "Plane obstacle (the foundation, a half-space): a point "
-                      "p on its boundary [length] (3D default: 0, 0, 0).");
-    prm.declare_entry(
-      "Normal",
-      "0, 1",
-      Patterns::List(Patterns::Double(), 2, 3),
-      "Plane obstacle: the normal m of its boundary, pointing from the "
-      "foundation into the body [-]. Normalised on input; must not be zero. "
-      "The initial gap is g0(x) = (x - p).m. Default: +y in 2D, +z in 3D "
-      "(0, 0, 1).");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Obstacle");
-    std::string names;
-    for (const std::string &name : obstacle_names())
-      names += (names.empty() ? "" : "|") + name;
-    prm.declare_entry(
-      "Type",
-      "plane",
-      Patterns::Selection(names),
-      "The rigid obstacle on Gamma_C. 'plane': a half-space, given in "
-      "subsection Foundation. 'cylinder': a disc in 2D, a circular cylinder "
-      "along <Obstacle/Axis> in 3D, of the given centre and radius, the "
-      "body outside it (an indenter). 'sphere' (3D; a disc in 2D): centre "
-      "and radius, the body outside. 'distance': the surface d(x) = 0 of the "
-      "signed-distance expression <Obstacle/Distance>, d > 0 where the body "
-      "is; the normal is its gradient, normalised. Gap and normal are taken "
-      "at each contact node's position before deformation (small "
-      "displacements).");
-    prm.declare_entry("Center",
-                      "0, 0",
-                      Patterns::List(Patterns::Double(), 2, 3),
-                      "Cylinder, sphere: the centre c (for a 3D cylinder, a "
-                      "point on its axis) [length] (3D default: 0, 0, 0).");
-    prm.declare_entry("Radius",
-                      "1",
-                      Patterns::Double(0., Patterns::Double::max_double_value),
-                      "Cylinder, sphere: the radius R [length]. Must be "
-                      "positive.");
-    prm.declare_entry("Axis",
-                      "0, 0, 1",
-                      Patterns::List(Patterns::Double(), 3, 3),
-                      "Cylinder in 3D: the direction of its axis [-]. "
-                      "Normalised on input; must not be zero.");
-    prm.declare_entry(
-      "Distance",
-      "",
-      Patterns::Anything(),
-      "Distance: the signed distance d(x, y) (2D) or d(x, y, z) (3D) from "
-      "the obstacle's surface [length], > 0 where the body is, in the "
-      "function parser's syntax (constants E, nu, L as elsewhere). Its "
-      "gradient should have length 1 near the surface; it is computed by "
-      "central differences and normalised. Example: a flat punch of "
-      "half-width 0.1 whose face lies on y = 1, above the body: "
-      "'max(1 - y, abs(x) - 0.1)'.");
-    prm.declare_entry("Displacement",
-                      "",
-                      Patterns::List(Patterns::Double(), 0, 3),
-                      "A rigid translation U of the obstacle, prescribed "
-                      "(e.g. an indentation depth: U = 0, -0.01 moves it "
-                      "down by 0.01) [length], one value per dimension; "
-                      "empty: it stays where it is. The force on the "
-                      "obstacle is reported.");
-    prm.leave_subsection();
-  }
-
-  void
-  ObstacleParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Foundation");
-    point  = parse_doubles(prm.get("Point"));
-    normal = parse_doubles(prm.get("Normal"));
-    prm.leave_subsection();
-    prm.enter_subsection("Obstacle");
-    type         = prm.get("Type");
-    center       = parse_doubles(prm.get("Center"));
-    radius       = prm.get_double("Radius");
-    axis         = parse_doubles(prm.get("Axis"));
-    distance     = prm.get("Distance");
-    displacement = parse_doubles(prm.get("Displacement"));
-    prm.leave_subsection();
-  }
-
   // ------------------------------------------------------------ Friction
 
   void
@@ -745,23 +635,25 @@ namespace dualcontact
     std::string names;
     for (const std::string &name : friction_law_names())
       names += (names.empty() ? "" : "|") + name;
-    prm.declare_entry(
-      "Law",
-      "none",
-      Patterns::Selection(names),
-      "Friction on the contact boundary, one of " + names +
-        ": 'none' (frictionless), 'given' (Tresca: the threshold g below), "
-        "'coulomb' (|sigma_t| <= F |sigma_n| with the coefficient F below).");
-    prm.declare_entry("Coefficient",
-                      "0",
-                      Patterns::Anything(),
-                      "Coulomb friction coefficient F [-], >= 0: a number or "
-                      "an expression in x, y (z).");
-    prm.declare_entry("Threshold",
-                      "0",
-                      Patterns::Anything(),
-                      "Given friction threshold g [stress], >= 0: a number or "
-                      "an expression in x, y (z).");
+    std::string help;
+    for (const std::string &name : friction_law_names())
+      help += std::string(help.empty() ? "" : ", ") + "'" + name + "' (" +
+              create_friction_law(name)->help() + ")";
+    prm.declare_entry("Law",
+                      "none",
+                      Patterns::Selection(names),
+                      "Friction on the contact boundary, one of " + help + ".");
+    prm.leave_subsection();
+    // each law's own entry, once
+    std::set<std::string> declared;
+    for (const std::string &name : friction_law_names())
+      {
+        const auto        law   = create_friction_law(name);
+        const std::string entry = law->parameter_entry();
+        if (!entry.empty() && declared.insert(entry).second)
+          law->declare_parameters(prm);
+      }
+    prm.enter_subsection("Friction");
     prm.declare_entry(
       "Threshold iteration",
       "merged",
@@ -795,17 +687,17 @@ namespace dualcontact
   FrictionParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Friction");
-    law               = prm.get("Law");
-    coefficient       = prm.get("Coefficient");
-    threshold         = prm.get("Threshold");
-    strategy          = prm.get("Threshold iteration") == "nested" ?
-                          FrictionStrategy::nested :
-                          FrictionStrategy::merged;
-    initial_threshold = prm.get("Initial threshold") == "zero" ?
-                          InitialThreshold::zero :
-                          InitialThreshold::frictionless;
-    tolerance         = prm.get_double("Threshold tolerance");
-    max_steps         = prm.get_integer("Maximum threshold steps");
+    law                     = prm.get("Law");
+    const std::string entry = create_friction_law(law)->parameter_entry();
+    parameter               = entry.empty() ? "" : prm.get(entry);
+    strategy                = prm.get("Threshold iteration") == "nested" ?
+                                FrictionStrategy::nested :
+                                FrictionStrategy::merged;
+    initial_threshold       = prm.get("Initial threshold") == "zero" ?
+                                InitialThreshold::zero :
+                                InitialThreshold::frictionless;
+    tolerance               = prm.get_double("Threshold tolerance");
+    max_steps               = prm.get_integer("Maximum threshold steps");
     prm.leave_subsection();
   }
 
@@ -1017,40 +909,33 @@ namespace dualcontact
                       Patterns::Integer(1, 30),
                       "Number of meshes solved on; each after the first is "
                       "the previous one refined [-].");
+    std::string names, help;
+    for (const std::string &name : refinement_indicator_names())
+      {
+        names += (names.empty() ? "" : "|") + name;
+        help += " '" + name + "' " + refinement_indicator_kind(name).help;
+      }
+    prm.declare_entry("Strategy",
+                      "global",
+                      Patterns::Selection(names),
+                      "How the mesh is refined between cycles; every mesh "
+                      "is the previous one refined (nested meshes)." +
+                        help);
     prm.declare_entry(
-      "Strategy",
-      "global",
-      Patterns::Selection("global|kelly|contact"),
-      "How the mesh is refined between cycles; every mesh is the previous "
-      "one refined (nested meshes). 'global' halves h everywhere, as the "
-      "source method does. 'kelly' refines (and coarsens) fixed fractions of "
-      "the cells ranked by deal.II's Kelly estimator, the jump of the "
-      "displacement gradient across faces. 'contact' adds to Kelly's "
-      "indicator a term on Gamma_C: the residual of the contact tractions, "
-      "h_F/E^2 int_F |sigma(u_h) n + l1 n + l2 t|^2 (n the outward normal, "
-      "t the tangent), which is large where "
-      "the discrete tractions disagree with the multipliers: the edges of "
-      "the contact zone and the stick/slip boundary.");
-    prm.declare_entry("Refine fraction",
-                      "0.3",
-                      Patterns::Double(0., 1.),
-                      "'kelly' and 'contact': the fraction of the cells, "
-                      "those with the largest indicators, refined per cycle "
-                      "[-].");
-    prm.declare_entry("Coarsen fraction",
-                      "0",
-                      Patterns::Double(0., 1.),
-                      "'kelly' and 'contact': the fraction of the cells, "
-                      "those with the smallest indicators, coarsened per "
-                      "cycle [-]. Refine + coarsen fractions must not exceed "
-                      "1.");
+      "Refine fraction",
+      "0.3",
+      Patterns::Double(0., 1.),
+      "Adaptive strategies (not 'global'): the fraction of the cells, "
+      "those with the largest indicators, refined per cycle "
+      "[-].");
     prm.declare_entry(
-      "Contact indicator weight",
-      "1",
-      Patterns::Double(0.),
-      "'contact': the weight of the Gamma_C term against Kelly's volume "
-      "term [-]. Both are measured in strain^2 * length, so the weight has no "
-      "units; 0 gives 'kelly'.");
+      "Coarsen fraction",
+      "0",
+      Patterns::Double(0., 1.),
+      "Adaptive strategies (not 'global'): the fraction of the cells, "
+      "those with the smallest indicators, coarsened per "
+      "cycle [-]. Refine + coarsen fractions must not exceed "
+      "1.");
     prm.declare_entry(
       "Nested iteration",
       "true",
@@ -1069,6 +954,10 @@ namespace dualcontact
       "Newton steps and the time saved, and the difference of the two "
       "solutions (columns cold_* of cycles.csv). Doubles the cost.");
     prm.leave_subsection();
+    // the indicators' own entries
+    for (const std::string &name : refinement_indicator_names())
+      if (refinement_indicator_kind(name).declare_parameters != nullptr)
+        refinement_indicator_kind(name).declare_parameters(prm);
   }
 
   void
@@ -1077,16 +966,18 @@ namespace dualcontact
     prm.enter_subsection("Refinement");
     initial_global_refinement = prm.get_integer("Initial global refinement");
     n_cycles                  = prm.get_integer("Number of cycles");
-    const std::string name    = prm.get("Strategy");
-    strategy                  = name == "kelly"   ? RefinementStrategy::kelly :
-                                name == "contact" ? RefinementStrategy::contact :
-                                                    RefinementStrategy::global;
+    strategy                  = prm.get("Strategy");
     refine_fraction           = prm.get_double("Refine fraction");
     coarsen_fraction          = prm.get_double("Coarsen fraction");
-    contact_weight            = prm.get_double("Contact indicator weight");
     nested_iteration          = prm.get_bool("Nested iteration");
     compare_cold_start        = prm.get_bool("Compare with cold start");
     prm.leave_subsection();
+    // every indicator's entries, so that a program may change the strategy
+    std::vector<std::string> entries;
+    for (const std::string &name : refinement_indicator_names())
+      for (const std::string &entry : refinement_indicator_kind(name).entries)
+        entries.push_back(entry);
+    values = read_entry_values(prm, entries);
     if (refine_fraction + coarsen_fraction > 1.)
       throw InputError("The entries <Refinement/Refine fraction> and "
                        "<Refinement/Coarsen fraction> add up to more than 1.",
@@ -1324,11 +1215,13 @@ namespace dualcontact
         {{"Geometry", "Lower left corner", "0, 0, 0"}},
         {{"Geometry", "Upper right corner", "1, 1, 1"}},
         {{"Geometry", "Subdivisions", "1, 1, 1"}},
-        {{"Geometry", "Center", "0, 0, 0"}},
-        {{"Foundation", "Point", "0, 0, 0"}},
-        {{"Foundation", "Normal", "0, 0, 1"}},
-        {{"Obstacle", "Center", "0, 0, 0"}}};
-      for (const auto &[subsection, entry, value] : defaults)
+        {{"Geometry", "Center", "0, 0, 0"}}};
+      std::vector<std::array<std::string, 3>> all = defaults;
+      for (const std::string &name : obstacle_names())
+        for (const auto &entry : obstacle_kind(name).defaults_3d)
+          if (std::find(all.begin(), all.end(), entry) == all.end())
+            all.push_back(entry);
+      for (const auto &[subsection, entry, value] : all)
         if (set.count(subsection + "/" + entry) == 0)
           {
             prm.enter_subsection(subsection);
@@ -1584,46 +1477,13 @@ namespace dualcontact
 
     if (!boundary.ids_with(BoundaryCondition::contact).empty())
       {
-        if (obstacle.type == "plane")
-          {
-            need_dim(obstacle.point, "Foundation/Point");
-            need_dim(obstacle.normal, "Foundation/Normal");
-            double norm = 0;
-            for (const double c : obstacle.normal)
-              norm += c * c;
-            if (!(std::sqrt(norm) > 1e-12))
-              throw InputError("The entry <Foundation/Normal> must not be the "
-                               "zero vector.",
-                               exit_invalid_value);
-          }
-        else if (obstacle.type == "distance")
-          {
-            if (obstacle.distance.find_first_not_of(" \t") == std::string::npos)
-              throw InputError("The entry <Obstacle/Type> is 'distance' but "
-                               "<Obstacle/Distance> gives no expression.",
-                               exit_inconsistent);
-          }
-        else
-          {
-            need_dim(obstacle.center, "Obstacle/Center");
-            if (!(obstacle.radius > 0.))
-              throw InputError("The entry <Obstacle/Radius> must be positive.",
-                               exit_invalid_value);
-            if (obstacle.type == "cylinder" && dim == 3)
-              {
-                double norm = 0;
-                for (const double c : obstacle.axis)
-                  norm += c * c;
-                if (!(std::sqrt(norm) > 1e-12))
-                  throw InputError("The entry <Obstacle/Axis> must not be the "
-                                   "zero vector.",
-                                   exit_invalid_value);
-              }
-          }
+        const ObstacleKind &kind = obstacle_kind(obstacle.type);
+        if (kind.check != nullptr)
+          kind.check(obstacle.values, dim);
         if (!obstacle.displacement.empty())
           need_dim(obstacle.displacement, "Obstacle/Displacement");
       }
-    else if (friction.law != "none")
+    else if (create_friction_law(friction.law)->has_friction())
       throw InputError("The entry <Friction/Law> asks for friction, but no "
                        "boundary id has the condition 'contact'.",
                        exit_inconsistent);
@@ -1636,6 +1496,53 @@ namespace dualcontact
                        "toward the foundation, but the scene has no contact "
                        "boundary.",
                        exit_inconsistent);
+  }
+
+  EntryValues
+  read_entry_values(ParameterHandler               &prm,
+                    const std::vector<std::string> &entries)
+  {
+    EntryValues values;
+    for (const std::string &entry : entries)
+      {
+        const auto slash = entry.find('/');
+        prm.enter_subsection(entry.substr(0, slash));
+        values[entry] = prm.get(entry.substr(slash + 1));
+        prm.leave_subsection();
+      }
+    return values;
+  }
+
+  std::vector<double>
+  numbers_of(const EntryValues &values, const std::string &entry)
+  {
+    const auto it = values.find(entry);
+    AssertThrow(it != values.end(),
+                ExcMessage("A plugin reads <" + entry +
+                           ">, which it does not list among its entries."));
+    return Utilities::string_to_double(
+      Utilities::split_string_list(it->second, ','));
+  }
+
+  std::vector<double>
+  vector_of(const EntryValues &values,
+            const std::string &entry,
+            const unsigned int n,
+            const bool         nonzero)
+  {
+    const std::vector<double> v = numbers_of(values, entry);
+    if (v.size() != n)
+      throw InputError("The entry <" + entry + "> needs " + std::to_string(n) +
+                         " values (one per dimension), not " +
+                         std::to_string(v.size()) + ".",
+                       exit_inconsistent);
+    double norm = 0.;
+    for (const double c : v)
+      norm += c * c;
+    if (nonzero && !(std::sqrt(norm) > 1e-12))
+      throw InputError("The entry <" + entry + "> must not be the zero vector.",
+                       exit_invalid_value);
+    return v;
   }
 
   std::string

@@ -35,11 +35,7 @@ namespace dualcontact
     std::string
     obstacle_entries(const Scene<dim> &scene)
     {
-      const std::string kind = scene.obstacle()->name();
-      std::string       entries =
-        kind == "plane" ? "<Foundation/Point> and <Foundation/Normal>" :
-              kind == "distance" ? "<Obstacle/Distance>" :
-                                   "<Obstacle/Center> and <Obstacle/Radius>";
+      std::string entries = scene.obstacle().entries();
       if (scene.obstacle().displacement().norm() > 0)
         entries += ", <Obstacle/Displacement>";
       return entries;

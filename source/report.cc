@@ -553,7 +553,7 @@ namespace dualcontact
     pcout << "Cycle " << mesh.cycle << ": " << mesh.n_cells << " cells, "
           << mesh.n_dofs << " DoFs" << seconds(phase_time("setup system"));
     if (mesh.cycle > 0)
-      pcout << ", refined (" << to_string(parameters.refinement.strategy)
+      pcout << ", refined (" << parameters.refinement.strategy
             << (!transfer.warm_start    ? "" :
                 scene.effects().contact ? ", v and multipliers carried over" :
                                           ", v carried over")
@@ -1111,7 +1111,7 @@ namespace dualcontact
       if (parameters.output.print_timing)
         table.set_precision(key, 3);
     std::vector<std::string> about = {
-      to_string(parameters.refinement.strategy) + " refinement" +
+      parameters.refinement.strategy + " refinement" +
       (parameters.refinement.nested_iteration ? ", nested iteration" :
                                                 ", cold starts")};
     if (scene.effects().contact)

@@ -1,4 +1,5 @@
 #include <dualcontact/input_error.h>
+#include <dualcontact/refinement_indicator.h>
 #include <dualcontact/run_size.h>
 
 #include <unistd.h>
@@ -34,8 +35,9 @@ namespace dualcontact
     // (doc/performance.md), 2D prm/hertz.prm and prm/hertz_friction.prm on
     // 2 ranks (5 global cycles) take 1.49 and 1.56 kB per DoF up to
     // 1,207,298 DoFs (the peak is the AMG set-up). The 3D figure was
-    // measured with an assembled mass matrix and is an upper bound. Rounded up: the check is to refuse what
-    // cannot fit, not to predict the peak to the megabyte.
+    // measured with an assembled mass matrix and is an upper bound. Rounded up:
+    // the check is to refuse what cannot fit, not to predict the peak to the
+    // megabyte.
     constexpr double bytes_per_dof_2d = 1700.;
     constexpr double bytes_per_dof_3d = 7300.;
     constexpr double bytes_per_rank   = 180. * 1024. * 1024.;
@@ -129,7 +131,8 @@ namespace dualcontact
       if (r.n_cycles > 1)
         entries.push_back(
           setting("Refinement/Number of cycles", std::to_string(r.n_cycles)));
-      if (r.n_cycles > 1 && r.strategy != RefinementStrategy::global)
+      if (r.n_cycles > 1 &&
+          !refinement_indicator_kind(r.strategy).refines_every_cell())
         entries.push_back(
           setting("Refinement/Refine fraction", number(r.refine_fraction)));
       std::string text;
@@ -147,9 +150,10 @@ namespace dualcontact
     const unsigned int          dim        = parameters.geometry.dimension;
     const double                children   = std::pow(2., dim);
     const RefinementParameters &refinement = parameters.refinement;
-    const double growth = refinement.strategy == RefinementStrategy::global ?
-                            children :
-                            1. + (children - 1.) * refinement.refine_fraction;
+    const double                growth =
+      refinement_indicator_kind(refinement.strategy).refines_every_cell() ?
+                       children :
+                       1. + (children - 1.) * refinement.refine_fraction;
 
     RunSize size;
     size.cycle         = refinement.n_cycles - 1;

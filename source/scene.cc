@@ -262,7 +262,8 @@ namespace dualcontact
     // there (its entries have defaults), so that gaps are defined
     obstacle_ = std::make_unique<PlacedObstacle<dim>>(
       create_obstacle<dim>(parameters, length),
-      to_point<dim>(parameters.obstacle.displacement));
+      to_point<dim>(parameters.obstacle.displacement),
+      obstacle_entries_text(parameters));
 
     effects_.contact  = !ids_with(BoundaryCondition::contact).empty();
     effects_.obstacle = (*obstacle_)->description();
@@ -276,10 +277,8 @@ namespace dualcontact
     const std::string parameter = effects_.friction->parameter_entry();
     if (effects_.contact && !parameter.empty())
       {
-        const std::string expression = parameter == "Coefficient" ?
-                                         parameters.friction.coefficient :
-                                         parameters.friction.threshold;
-        const std::string entry      = "Friction/" + parameter;
+        const std::string &expression = parameters.friction.parameter;
+        const std::string  entry      = "Friction/" + parameter;
         friction_ = make_function<dim>(expression, 1, material, entry, length);
         if (is_zero_expression(expression))
           {

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The test multigrid_same_solution: contrib/benchmark_multigrid.cc solves the
-# Newton matrix of prm/hertz.prm (K + chi M + the contact terms of the zone
-# |x| < 0.1) with the program's AMG, with the geometric multigrid on
-# assembled level matrices (gmg) and with the matrix-free one (mf: no matrix
-# stored, the operator by cell quadrature), on the scene's first mesh and
-# once refined (5078 and 19538 DoFs), on 2 ranks. Passes if
+# The test benchmark_multigrid_same_solution (registered with
+# -DDUALCONTACT_BUILD_BENCHMARKS=ON): benchmarks/benchmark_multigrid.cc
+# solves the Newton matrix of prm/hertz.prm (K + chi M + the contact terms
+# of the zone |x| < 0.1) with the program's AMG, with the geometric
+# multigrid on assembled level matrices (gmg) and with the matrix-free one
+# (mf: no matrix stored, the operator by cell quadrature), on the scene's
+# first mesh and once refined (5078 and 19538 DoFs), on 2 ranks. Passes if
 #   - all three give the same solution: |x| agrees to 1e-8 relative (CG to
 #     1e-10 of the load; the matrix-free operator and its condensed contact
 #     terms are built apart from the assembled matrix, so a wrong term there
@@ -12,9 +13,9 @@
 #     a wrong level matrix, transfer or smoother stalls CG);
 #   - each geometric multigrid's CG count stays at most 20 on both meshes
 #     (measured 16, 18 and 15, 17; 17-19 up to 1.2e6 DoFs, where the AMG
-#     takes 37, doc/benchmark_multigrid.md) and below the AMG's (23, 27).
-#     Without the contact terms on the levels the assembled one takes 95
-#     and 140.
+#     takes 37, doc/benchmarks/benchmark_multigrid.md) and below the AMG's
+#     (23, 27). Without the contact terms on the levels the assembled one
+#     takes 95 and 140.
 #   bash check_multigrid.sh <source dir> <benchmark_multigrid> <mpirun> <work dir>
 set -euo pipefail
 source_dir="$1"

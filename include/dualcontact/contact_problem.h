@@ -48,8 +48,8 @@ namespace dualcontact
   {
   public:
     /**
-     * Builds the scene from the parameters (throws InputError on bad
-     * input). Screen output goes to `out` on rank 0 only.
+     * Builds the scene from a copy of the parameters (throws InputError on
+     * bad input). Screen output goes to `out` on rank 0 only.
      */
     ContactProblem(const Parameters &parameters,
                    MPI_Comm          mpi_communicator = MPI_COMM_WORLD,
@@ -275,9 +275,11 @@ namespace dualcontact
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
 
-    // the scene (built first: bad input throws before anything else exists)
-    const Parameters &parameters;
-    const Scene<dim>  scene;
+    // the scene (built first: bad input throws before anything else exists);
+    // the problem keeps its own copy of the parameters, which the solvers
+    // below refer to
+    const Parameters parameters;
+    const Scene<dim> scene;
 
     // timing and everything the run tells
     mutable TimerOutput computing_timer; // const phases are timed too

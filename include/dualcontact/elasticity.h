@@ -11,7 +11,6 @@
 #include <deal.II/fe/mapping.h>
 
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -51,25 +50,6 @@ namespace dualcontact
                       TrilinosWrappers::MPI::Vector   &system_rhs,
                       LumpedMass                      *mass         = nullptr,
                       std::array<double, 3>           *applied_load = nullptr);
-
-  /**
-   * The load b of assemble_elasticity() (tractions, body force and the
-   * lifting of prescribed displacements, with the same constraints) and, if
-   * `mass` is given, the lumped mass as a vector, without a matrix: for a
-   * solver that applies K without storing it (contrib/benchmark_multigrid.cc
-   * with a matrix-free operator). VectorType is
-   * TrilinosWrappers::MPI::Vector or
-   * LinearAlgebra::distributed::Vector<double>, with the locally owned DoFs
-   * and, for the latter, ghosts for every DoF the constraints write to.
-   */
-  template <int dim, typename VectorType>
-  void
-  assemble_load(const Mapping<dim>              &mapping,
-                const DoFHandler<dim>           &dof_handler,
-                const Scene<dim>                &scene,
-                const AffineConstraints<double> &constraints,
-                VectorType                      &load,
-                VectorType                      *mass = nullptr);
 
   /**
    * The reaction forces on the body from its supports: at every 'fixed' and

@@ -4,8 +4,10 @@
 // once, by the name in <Friction/Law>; the solver asks it, and nothing else,
 // what the threshold is.
 //
-// Adding a law is one new file in source/friction_laws/: a class derived
-// from FrictionLaw and one line that registers it under its name, e.g.
+// Adding a law is one new file in source/friction_laws/ (or in a program of
+// one's own): a class derived from FrictionLaw, which declares its own
+// entry in subsection Friction, and one line that registers it under its
+// name, e.g.
 //
 //   const bool registered = register_friction_law(
 //     "my law", [] { return std::make_unique<MyLaw>(); });
@@ -14,7 +16,10 @@
 #ifndef dualcontact_friction_law_h
 #define dualcontact_friction_law_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +38,24 @@ namespace dualcontact
     /** One line for the list of composed effects: what runs. */
     virtual std::string
     description() const = 0;
+
+    /** What <Friction/Law> = this name means, for its help text. */
+    virtual std::string
+    help() const
+    {
+      return description();
+    }
+
+    /**
+     * Declares the law's own entry, parameter_entry(), in subsection
+     * Friction (with its pattern, default and help text with units). Not
+     * called if another law declared the entry already.
+     */
+    virtual void
+    declare_parameters(dealii::ParameterHandler &prm) const
+    {
+      (void)prm;
+    }
 
     /**
      * Whether there is friction at all: without it there is no tangential
@@ -55,7 +78,7 @@ namespace dualcontact
 
     /**
      * The entry of subsection Friction whose expression gives the friction
-     * parameter at each contact node ("Coefficient" or "Threshold"); empty
+     * parameter at each contact node (FrictionParameters::parameter); empty
      * if the law has none.
      */
     virtual std::string
@@ -95,6 +118,13 @@ namespace dualcontact
   /** The registered names, in alphabetical order. */
   std::vector<std::string>
   friction_law_names();
+
+  /**
+   * The laws' own entries (FrictionLaw::parameter_entry), each with the
+   * names of the laws that read it.
+   */
+  std::map<std::string, std::vector<std::string>>
+  friction_law_entries();
 
   /** The law called `name`; throws if there is none. */
   std::unique_ptr<FrictionLaw>

@@ -13,6 +13,7 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -78,9 +79,11 @@ namespace dualcontact
   {
   public:
     PlacedObstacle(std::unique_ptr<Obstacle<dim>> shape,
-                   const Tensor<1, dim>          &translation)
+                   const Tensor<1, dim>          &translation,
+                   const std::string             &entries)
         : shape(std::move(shape))
         , translation(translation)
+        , entries_(entries)
     {}
 
     double
@@ -113,29 +116,98 @@ namespace dualcontact
       return translation;
     }
 
+    /**
+     * The entries that give the obstacle's shape and place, for messages
+     * ("<Foundation/Point> and <Foundation/Normal>").
+     */
+    const std::string &
+    entries() const
+    {
+      return entries_;
+    }
+
   private:
     std::unique_ptr<Obstacle<dim>> shape;
     Tensor<1, dim>                 translation;
+    std::string                    entries_;
   };
 
   template <int dim>
   using ObstacleFactory =
-    std::function<std::unique_ptr<Obstacle<dim>>(const Parameters &parameters,
-                                                 const double      length)>;
+    std::function<std::unique_ptr<Obstacle<dim>>(const EntryValues &values,
+                                                 const Parameters  &parameters,
+                                                 const double       length)>;
+
+  /**
+   * What a kind of obstacle registers from its own file: the help text of
+   * its name in <Obstacle/Type>, the declaration of its entries, which of
+   * them it reads, their checks, and its factories. No other file knows its
+   * name or its entries.
+   */
+  struct ObstacleKind
+  {
+    /** What <Obstacle/Type> = this name gives: a sentence or two. */
+    std::string help;
+
+    /**
+     * Declares the kind's entries, in the subsections it names itself. The
+     * kinds of one file that share entries register the same function,
+     * which is called once.
+     */
+    void (*declare_parameters)(ParameterHandler &prm) = nullptr;
+
+    /**
+     * The entries ("Subsection/Entry") the kind reads in a scene of
+     * dimension dim; those it declares but does not read there have no
+     * effect (a warning names them).
+     */
+    std::vector<std::string> (*entries)(unsigned int dim) = nullptr;
+
+    /**
+     * The values of its points and vectors in a 3D scene that does not set
+     * them: {subsection, entry, value}.
+     */
+    std::vector<std::array<std::string, 3>> defaults_3d;
+
+    /**
+     * Checks the values against each other and the dimension; throws
+     * InputError naming the entry. Called where the parameters are read.
+     */
+    void (*check)(const EntryValues &values, unsigned int dim) = nullptr;
+
+    ObstacleFactory<2> create_2d;
+    ObstacleFactory<3> create_3d;
+  };
 
   /**
    * Make `name` known to <Obstacle/Type>, in 2D and 3D. Called once per
-   * kind, at load time, from the kind's own file. Returns true (for the
-   * static initialiser).
+   * kind, at load time, from the kind's own file (a program may register
+   * its own kinds the same way). Returns true (for the static initialiser).
    */
   bool
-  register_obstacle(const std::string &name,
-                    ObstacleFactory<2> factory_2d,
-                    ObstacleFactory<3> factory_3d);
+  register_obstacle(const std::string &name, ObstacleKind kind);
 
   /** The registered names, in alphabetical order. */
   std::vector<std::string>
   obstacle_names();
+
+  /** The kind registered as `name`; InputError naming <Obstacle/Type>. */
+  const ObstacleKind &
+  obstacle_kind(const std::string &name);
+
+  /**
+   * The entries the registered kinds read in a scene of dimension dim, each
+   * with the names of the kinds that read it.
+   */
+  std::map<std::string, std::vector<std::string>>
+  obstacle_entry_readers(unsigned int dim);
+
+  /**
+   * Declares <Obstacle/Type> and <Obstacle/Displacement>, and every
+   * registered kind's entries.
+   */
+  void
+  declare_obstacle_parameters(ParameterHandler &prm);
 
   /**
    * The obstacle <Obstacle/Type> names, built from the parameters; `length`
@@ -145,6 +217,13 @@ namespace dualcontact
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
   create_obstacle(const Parameters &parameters, const double length);
+
+  /**
+   * The entries that place the obstacle of the scene, for messages:
+   * "<Foundation/Point> and <Foundation/Normal>".
+   */
+  std::string
+  obstacle_entries_text(const Parameters &parameters);
 
   /**
    * The point (or vector) of a list of coordinates from a parameter entry;

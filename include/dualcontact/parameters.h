@@ -18,6 +18,12 @@ namespace dualcontact
 
   class ParameterReader;
 
+  /**
+   * The entries a plugin (an obstacle kind, a refinement indicator) reads,
+   * as the scene gives them: "Subsection/Entry" -> value.
+   */
+  using EntryValues = std::map<std::string, std::string>;
+
   enum class GeometryType
   {
     rectangle,
@@ -50,19 +56,10 @@ namespace dualcontact
     frictionless // g^0 = F times the frictionless contact pressure
   };
 
-  enum class RefinementStrategy
-  {
-    global, // every cell refined: h halved per cycle
-    kelly,  // Kelly's estimator, fixed fractions of the cells
-    contact // Kelly plus a residual of the contact tractions on Gamma_C
-  };
-
   std::string
   to_string(const BoundaryCondition condition);
   std::string
   to_string(const GeometryType type);
-  std::string
-  to_string(const RefinementStrategy strategy);
 
   /**
    * A curved boundary part of a mesh read from a file: the boundary faces
@@ -162,19 +159,15 @@ namespace dualcontact
 
   /**
    * The rigid obstacle (doc/theory.md §10): its kind (a name registered in
-   * obstacle.h; the plane takes its point and normal from
-   * FoundationParameters), the data of the curved kinds, and a prescribed
-   * rigid translation.
+   * obstacle.h, whose file declares, reads and checks the entries below),
+   * the entries of every kind (so that a program may change the kind), and a
+   * prescribed rigid translation.
+   * Declared and parsed in obstacle.cc.
    */
   struct ObstacleParameters
   {
     std::string         type = "plane";
-    std::vector<double> point;  // the plane (from <Foundation/...>)
-    std::vector<double> normal; // the plane, normalised by the obstacle
-    std::vector<double> center;
-    double              radius = 1.;
-    std::vector<double> axis;
-    std::string         distance; // d(x, y[, z]) for 'distance'
+    EntryValues         values; // the entries of every kind
     std::vector<double> displacement;
 
     static void
@@ -187,8 +180,9 @@ namespace dualcontact
   struct FrictionParameters
   {
     std::string law = "none"; // a name registered in friction_law.h
-    std::string coefficient;
-    std::string threshold;
+    // the expression of the law's own entry (FrictionLaw::parameter_entry:
+    // a coefficient, a threshold); empty for a law without one
+    std::string parameter;
 
     // the threshold iteration (laws whose threshold depends on l1)
     FrictionStrategy strategy          = FrictionStrategy::merged;
@@ -238,12 +232,14 @@ namespace dualcontact
   /** The sequence of meshes. */
   struct RefinementParameters
   {
-    unsigned int       initial_global_refinement = 0;
-    unsigned int       n_cycles                  = 1;
-    RefinementStrategy strategy                  = RefinementStrategy::global;
-    double             refine_fraction           = 0.3;
-    double             coarsen_fraction          = 0.;
-    double             contact_weight            = 1.;
+    unsigned int initial_global_refinement = 0;
+    unsigned int n_cycles                  = 1;
+    // a name registered in refinement_indicator.h, and the entries of
+    // every indicator (so that a program may change the strategy)
+    std::string strategy = "global";
+    EntryValues values;
+    double      refine_fraction  = 0.3;
+    double      coarsen_fraction = 0.;
     // carry v, l1, l2 and g from one mesh to the next (nested iteration)
     bool nested_iteration = true;
     // also solve every refined mesh from a cold start, for comparison
@@ -349,7 +345,8 @@ namespace dualcontact
     /**
      * One line per entry that was given but has no effect in this scene (a
      * friction coefficient without a friction law, refinement fractions with
-     * global refinement, ...): which entry, why, and where it was set.
+     * global refinement, ...): which entry, why, and where it was set; in
+     * the order the input gives them.
      */
     std::vector<std::string>
     ineffective_entries() const;
@@ -384,6 +381,25 @@ namespace dualcontact
   /** The default parameter file, with every help text, as a string. */
   std::string
   default_parameter_file();
+
+  /** The values of `entries` ("Subsection/Entry") in the handler. */
+  EntryValues
+  read_entry_values(ParameterHandler               &prm,
+                    const std::vector<std::string> &entries);
+
+  /** The numbers of a comma-separated entry value. */
+  std::vector<double>
+  numbers_of(const EntryValues &values, const std::string &entry);
+
+  /**
+   * numbers_of(), checked: n values (InputError, exit 6, otherwise) and,
+   * with `nonzero`, not the zero vector (exit 5).
+   */
+  std::vector<double>
+  vector_of(const EntryValues &values,
+            const std::string &entry,
+            unsigned int       n,
+            bool               nonzero = false);
 
   /** True if every component of the "a; b; c" expression is the number 0. */
   bool

@@ -5,6 +5,8 @@
 
 namespace dualcontact
 {
+  using namespace dealii;
+
   namespace
   {
     class Coulomb : public FrictionLaw
@@ -21,6 +23,25 @@ namespace dualcontact
       {
         return "Coulomb: the threshold iteration g = F l1 around Uzawa on "
                "l1, l2";
+      }
+
+      std::string
+      help() const override
+      {
+        return "|sigma_t| <= F |sigma_n| with the coefficient "
+               "<Friction/Coefficient>";
+      }
+
+      void
+      declare_parameters(ParameterHandler &prm) const override
+      {
+        prm.enter_subsection("Friction");
+        prm.declare_entry("Coefficient",
+                          "0",
+                          Patterns::Anything(),
+                          "Coulomb friction coefficient F [-], >= 0: a "
+                          "number or an expression in x, y (z).");
+        prm.leave_subsection();
       }
 
       bool

@@ -20,6 +20,12 @@ namespace dualcontact
         return "no";
       }
 
+      std::string
+      help() const override
+      {
+        return "frictionless";
+      }
+
       bool
       has_friction() const override
       {

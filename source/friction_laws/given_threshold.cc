@@ -4,6 +4,8 @@
 
 namespace dualcontact
 {
+  using namespace dealii;
+
   namespace
   {
     class GivenThreshold : public FrictionLaw
@@ -19,6 +21,25 @@ namespace dualcontact
       description() const override
       {
         return "given threshold (Tresca): Uzawa on l1 and l2";
+      }
+
+      std::string
+      help() const override
+      {
+        return "Tresca, |sigma_t| <= g with the threshold "
+               "<Friction/Threshold>";
+      }
+
+      void
+      declare_parameters(ParameterHandler &prm) const override
+      {
+        prm.enter_subsection("Friction");
+        prm.declare_entry("Threshold",
+                          "0",
+                          Patterns::Anything(),
+                          "Given friction threshold g [stress], >= 0: a "
+                          "number or an expression in x, y (z).");
+        prm.leave_subsection();
       }
 
       bool

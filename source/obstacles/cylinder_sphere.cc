@@ -3,6 +3,9 @@
 // outside it: d(x) = |x - c|_perp - R, with |.|_perp the distance from the
 // axis (cylinder) or the centre (sphere), and m(x) the unit vector from the
 // axis or centre toward x.
+#include <deal.II/base/parameter_handler.h>
+
+#include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
 
 #include <sstream>
@@ -15,14 +18,14 @@ namespace dualcontact
     class Round : public Obstacle<dim>
     {
     public:
-      Round(const ObstacleParameters &parameters, const bool cylinder)
-          : kind(parameters.type)
-          , radius(parameters.radius)
+      Round(const EntryValues &values, const bool cylinder)
+          : kind(cylinder ? "cylinder" : "sphere")
+          , radius(numbers_of(values, "Obstacle/Radius").at(0))
       {
-        center = to_point<dim>(parameters.center);
+        center = to_point<dim>(numbers_of(values, "Obstacle/Center"));
         if (cylinder && dim == 3)
           {
-            axis = to_point<dim>(parameters.axis);
+            axis = to_point<dim>(numbers_of(values, "Obstacle/Axis"));
             if (axis.norm() > 0)
               axis /= axis.norm();
           }
@@ -80,16 +83,81 @@ namespace dualcontact
       Tensor<1, dim> axis; // zero unless a 3D cylinder
     };
 
-    template <int dim, bool cylinder>
-    std::unique_ptr<Obstacle<dim>>
-    make(const Parameters &parameters, const double)
+    // the entries of both kinds, declared once
+    void
+    declare(ParameterHandler &prm)
     {
-      return std::make_unique<Round<dim>>(parameters.obstacle, cylinder);
+      prm.enter_subsection("Obstacle");
+      prm.declare_entry("Center",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Cylinder, sphere: the centre c (for a 3D cylinder, "
+                        "a point on its axis) [length] (3D default: 0, 0, "
+                        "0).");
+      prm.declare_entry("Radius",
+                        "1",
+                        Patterns::Double(0.,
+                                         Patterns::Double::max_double_value),
+                        "Cylinder, sphere: the radius R [length]. Must be "
+                        "positive.");
+      prm.declare_entry("Axis",
+                        "0, 0, 1",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Cylinder in 3D: the direction of its axis [-]. "
+                        "Normalised on input; must not be zero.");
+      prm.leave_subsection();
     }
 
-    const bool registered_cylinder =
-      register_obstacle("cylinder", make<2, true>, make<3, true>);
+    template <bool cylinder>
+    std::vector<std::string>
+    entries(const unsigned int dim)
+    {
+      if (cylinder && dim == 3)
+        return {"Obstacle/Center", "Obstacle/Radius", "Obstacle/Axis"};
+      return {"Obstacle/Center", "Obstacle/Radius"};
+    }
+
+    template <bool cylinder>
+    void
+    check(const EntryValues &values, const unsigned int dim)
+    {
+      vector_of(values, "Obstacle/Center", dim);
+      if (!(numbers_of(values, "Obstacle/Radius").at(0) > 0.))
+        throw InputError("The entry <Obstacle/Radius> must be positive.",
+                         exit_invalid_value);
+      if (cylinder && dim == 3)
+        vector_of(values, "Obstacle/Axis", 3, true);
+    }
+
+    template <int dim, bool cylinder>
+    std::unique_ptr<Obstacle<dim>>
+    make(const EntryValues &values, const Parameters &, const double)
+    {
+      return std::make_unique<Round<dim>>(values, cylinder);
+    }
+
+    const std::vector<std::array<std::string, 3>> defaults_3d = {
+      {{"Obstacle", "Center", "0, 0, 0"}}};
+
+    const bool registered_cylinder = register_obstacle(
+      "cylinder",
+      {"a disc in 2D, a circular cylinder along <Obstacle/Axis> in 3D, of "
+       "the given centre and radius, the body outside it (an indenter).",
+       declare,
+       entries<true>,
+       defaults_3d,
+       check<true>,
+       make<2, true>,
+       make<3, true>});
     const bool registered_sphere =
-      register_obstacle("sphere", make<2, false>, make<3, false>);
+      register_obstacle("sphere",
+                        {"a ball in 3D, a disc in 2D, of the given centre "
+                         "and radius, the body outside it.",
+                         declare,
+                         entries<false>,
+                         defaults_3d,
+                         check<false>,
+                         make<2, false>,
+                         make<3, false>});
   } // namespace
 } // namespace dualcontact

@@ -3,6 +3,9 @@
 // gradient of d by central differences, normalised; where the gradient
 // vanishes or is not finite the normal is returned as zero and the contact
 // set reports the node as unusable.
+#include <deal.II/base/parameter_handler.h>
+
+#include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/scene.h>
 
@@ -16,8 +19,10 @@ namespace dualcontact
     class SignedDistance : public Obstacle<dim>
     {
     public:
-      SignedDistance(const Parameters &parameters, const double length)
-          : expression(parameters.obstacle.distance)
+      SignedDistance(const EntryValues &values,
+                     const Parameters  &parameters,
+                     const double       length)
+          : expression(values.at("Obstacle/Distance"))
           , function(make_function<dim>(expression,
                                         1,
                                         parameters.material,
@@ -69,13 +74,59 @@ namespace dualcontact
       double                         step;
     };
 
-    template <int dim>
-    std::unique_ptr<Obstacle<dim>>
-    make(const Parameters &parameters, const double length)
+    void
+    declare(ParameterHandler &prm)
     {
-      return std::make_unique<SignedDistance<dim>>(parameters, length);
+      prm.enter_subsection("Obstacle");
+      prm.declare_entry(
+        "Distance",
+        "",
+        Patterns::Anything(),
+        "Distance: the signed distance d(x, y) (2D) or d(x, y, z) (3D) from "
+        "the obstacle's surface [length], > 0 where the body is, in the "
+        "function parser's syntax (constants E, nu, L as elsewhere). Its "
+        "gradient should have length 1 near the surface; it is computed by "
+        "central differences and normalised. Example: a flat punch of "
+        "half-width 0.1 whose face lies on y = 1, above the body: "
+        "'max(1 - y, abs(x) - 0.1)'.");
+      prm.leave_subsection();
     }
 
-    const bool registered = register_obstacle("distance", make<2>, make<3>);
+    std::vector<std::string>
+    entries(const unsigned int)
+    {
+      return {"Obstacle/Distance"};
+    }
+
+    void
+    check(const EntryValues &values, const unsigned int)
+    {
+      if (values.at("Obstacle/Distance").find_first_not_of(" \t") ==
+          std::string::npos)
+        throw InputError("The entry <Obstacle/Type> is 'distance' but "
+                         "<Obstacle/Distance> gives no expression.",
+                         exit_inconsistent);
+    }
+
+    template <int dim>
+    std::unique_ptr<Obstacle<dim>>
+    make(const EntryValues &values,
+         const Parameters  &parameters,
+         const double       length)
+    {
+      return std::make_unique<SignedDistance<dim>>(values, parameters, length);
+    }
+
+    const bool registered = register_obstacle(
+      "distance",
+      {"the surface d(x) = 0 of the signed-distance expression "
+       "<Obstacle/Distance>, d > 0 where the body is; the normal is its "
+       "gradient, normalised.",
+       declare,
+       entries,
+       {},
+       check,
+       make<2>,
+       make<3>});
   } // namespace
 } // namespace dualcontact

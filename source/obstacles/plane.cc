@@ -1,6 +1,8 @@
-// The plane obstacle, the foundation of the older scenes: the half-space
-// behind the plane through p with unit normal m (pointing into the body),
-// d(x) = (x - p).m. Given in subsection Foundation.
+// The plane obstacle, the foundation: the half-space behind the plane
+// through p with unit normal m (pointing into the body), d(x) = (x - p).m.
+// Its entries are in subsection Foundation.
+#include <deal.II/base/parameter_handler.h>
+
 #include <dualcontact/obstacle.h>
 
 #include <sstream>
@@ -13,11 +15,11 @@ namespace dualcontact
     class Plane : public Obstacle<dim>
     {
     public:
-      explicit Plane(const ObstacleParameters &parameters)
+      explicit Plane(const EntryValues &values)
       {
         // without contact the entries are not checked: read what is there
-        point = to_point<dim>(parameters.point);
-        m     = to_point<dim>(parameters.normal);
+        point = to_point<dim>(numbers_of(values, "Foundation/Point"));
+        m     = to_point<dim>(numbers_of(values, "Foundation/Normal"));
         if (m.norm() > 0)
           m /= m.norm();
       }
@@ -59,13 +61,56 @@ namespace dualcontact
       Tensor<1, dim> m;
     };
 
-    template <int dim>
-    std::unique_ptr<Obstacle<dim>>
-    make(const Parameters &parameters, const double)
+    void
+    declare(ParameterHandler &prm)
     {
-      return std::make_unique<Plane<dim>>(parameters.obstacle);
+      prm.enter_subsection("Foundation");
+      prm.declare_entry("Point",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Plane obstacle (the foundation, a half-space): a "
+                        "point p on its boundary [length] (3D default: 0, 0, "
+                        "0).");
+      prm.declare_entry(
+        "Normal",
+        "0, 1",
+        Patterns::List(Patterns::Double(), 2, 3),
+        "Plane obstacle: the normal m of its boundary, pointing from the "
+        "foundation into the body [-]. Normalised on input; must not be "
+        "zero. The initial gap is g0(x) = (x - p).m. Default: +y in 2D, +z "
+        "in 3D (0, 0, 1).");
+      prm.leave_subsection();
     }
 
-    const bool registered = register_obstacle("plane", make<2>, make<3>);
+    std::vector<std::string>
+    entries(const unsigned int)
+    {
+      return {"Foundation/Point", "Foundation/Normal"};
+    }
+
+    void
+    check(const EntryValues &values, const unsigned int dim)
+    {
+      vector_of(values, "Foundation/Point", dim);
+      vector_of(values, "Foundation/Normal", dim, true);
+    }
+
+    template <int dim>
+    std::unique_ptr<Obstacle<dim>>
+    make(const EntryValues &values, const Parameters &, const double)
+    {
+      return std::make_unique<Plane<dim>>(values);
+    }
+
+    const bool registered =
+      register_obstacle("plane",
+                        {"a half-space, given in subsection Foundation.",
+                         declare,
+                         entries,
+                         {{{"Foundation", "Point", "0, 0, 0"}},
+                          {{"Foundation", "Normal", "0, 0, 1"}}},
+                         check,
+                         make<2>,
+                         make<3>});
   } // namespace
 } // namespace dualcontact

@@ -81,27 +81,36 @@ TEST_CASE("A 3D scene states only what differs: the foundation z = 0 with "
                             "end\n";
   Parameters        parameters;
   REQUIRE_NOTHROW(parameters.read_string(scene));
-  CHECK(parameters.obstacle.point == std::vector<double>{0., 0., 0.});
-  CHECK(parameters.obstacle.normal == std::vector<double>{0., 0., 1.});
+  const auto point = [](const Parameters &p) {
+    return numbers_of(p.obstacle.values, "Foundation/Point");
+  };
+  const auto normal = [](const Parameters &p) {
+    return numbers_of(p.obstacle.values, "Foundation/Normal");
+  };
+  CHECK(point(parameters) == std::vector<double>{0., 0., 0.});
+  CHECK(normal(parameters) == std::vector<double>{0., 0., 1.});
   CHECK(parameters.geometry.lower_left == std::vector<double>{0., 0., 0.});
   CHECK(parameters.geometry.upper_right == std::vector<double>{1., 1., 1.});
   CHECK(parameters.geometry.subdivisions == std::vector<unsigned int>{1, 1, 1});
   CHECK(parameters.geometry.center == std::vector<double>{0., 0., 0.});
-  CHECK(parameters.obstacle.center == std::vector<double>{0., 0., 0.});
+  Parameters sphere;
+  sphere.read_string(scene + "subsection Obstacle\n  set Type = sphere\nend\n");
+  CHECK(numbers_of(sphere.obstacle.values, "Obstacle/Center") ==
+        std::vector<double>{0., 0., 0.});
   // the listing holds the 3D values, and reads back to the same scene
   CHECK(contains(parameters.parameter_file, "set Normal = 0, 0, 1"));
   Parameters again;
   REQUIRE_NOTHROW(again.read_string(parameters.parameter_file));
-  CHECK(again.obstacle.normal == parameters.obstacle.normal);
+  CHECK(normal(again) == normal(parameters));
   // what a scene gives is kept, in 2D the defaults stay 2D
   Parameters given;
   given.read_string(scene + "subsection Foundation\n  set Point = 0, 0, "
                             "-1\nend\n");
-  CHECK(given.obstacle.point == std::vector<double>{0., 0., -1.});
-  CHECK(given.obstacle.normal == std::vector<double>{0., 0., 1.});
+  CHECK(point(given) == std::vector<double>{0., 0., -1.});
+  CHECK(normal(given) == std::vector<double>{0., 0., 1.});
   Parameters plane;
   plane.read_string("subsection Geometry\n  set Type = rectangle\nend\n");
-  CHECK(plane.obstacle.normal == std::vector<double>{0., 1.});
+  CHECK(normal(plane) == std::vector<double>{0., 1.});
 }
 
 TEST_CASE("An entry set twice is an error naming both lines; an overlay "
@@ -229,7 +238,7 @@ TEST_CASE("Overrides: --set changes an entry after the file, a malformed one "
   parameters.read_file(scene,
                        {"Friction/Coefficient=0.4",
                         "Material/Poisson's ratio = 0.25"});
-  CHECK(parameters.friction.coefficient == "0.4");
+  CHECK(parameters.friction.parameter == "0.4");
   CHECK(parameters.material.poissons_ratio == 0.25);
   CHECK(parameters.given.at("Friction/Coefficient") == "--set");
   CHECK(
@@ -262,7 +271,7 @@ TEST_CASE("The parameters as read, in --print-parameters form, read back to "
                    "Refinement/Refine fraction=0.5"});
   Parameters second;
   second.read_string(first.parameter_file);
-  CHECK(second.friction.coefficient == "0.25");
+  CHECK(second.friction.parameter == "0.25");
   CHECK(second.geometry.pre_refinement_steps ==
         first.geometry.pre_refinement_steps);
   // the same listing, but for the header line naming the file

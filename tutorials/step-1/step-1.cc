@@ -6,8 +6,9 @@
  * Uzawa iteration on a modified (augmented) Lagrangian, each of whose steps
  * is a smooth, strongly convex minimisation solved by Newton's method. This
  * program takes the mesh, the matrices and the Newton solver from the
- * library and writes the Uzawa iteration itself, one proximal step and one
- * multiplier update per step, so that every formula of doc/theory.md §3.2
+ * library and writes the Uzawa iteration itself: the loop, and in it the
+ * multiplier update with its measures of convergence, node by node and
+ * reduced over the MPI ranks, so that every formula of doc/theory.md §3.2
  * appears once in the text below. Then it asks what the augmentation
  * parameter r costs: the same mesh for r_rel = 0.1, 1, 10, 100.
  *
@@ -17,13 +18,15 @@
 // @sect3{Include files}
 //
 // The library's Problem class brings the mesh, the assembly and the contact
-// nodes; the Uzawa and Newton iterations are the two classes whose public
-// calls the loop below is made of.
+// nodes; the Newton iteration (inside UzawaIteration::proximal_step) solves
+// each proximal step, and UzawaIteration::converged is the stopping test.
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <dualcontact/contact_functions.h>
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/newton_solver.h>
@@ -136,6 +139,100 @@ namespace Step1
     double                     time = 0.;
   };
 
+  // @sect3{The multiplier update}
+  //
+  // Step 2 of a Uzawa step (README, "The dual function"): at every contact
+  // node s, with the gap g_s = g0_s - v_n(x_s) of the new displacement,
+  //
+  //   l1_s <- (l1_s + r (-g_s))^+ = (l1_s + r (v_n(x_s) - g0_s))^+,
+  //
+  // a gradient ascent with step r on the dual function. The positive part
+  // needs no projection of its own: it comes from the slack variable that
+  // the modified Lagrangian minimised out. Where a node penetrates
+  // (g_s < 0) its pressure grows by r times the penetration; where a gap
+  // is open, the pressure falls by r times the gap, down to zero.
+  //
+  // The same loop measures how far the iteration is from its fixed point
+  // (doc/theory.md §6), in norms over all contact nodes:
+  //   d(l1)     = |l1_new - l1| / |l1_new|   (Euclidean over the nodes),
+  //   violation = max_s (-g_s)^+ / |v|_inf,
+  //   complementarity = max_s l1_s |g_s| / (max_s l1_s |v|_inf),
+  // and d(v) = |v - v_previous| / |v| over all degrees of freedom.
+  // Each rank visits the nodes it owns, so every node is counted once; the
+  // sums and maxima of all ranks come from Utilities::MPI::sum and max.
+  // The record returned is what UzawaIteration::update_multipliers returns
+  // for a frictionless scene, to the last bit: the same operations in the
+  // same order (the squares summed node by node on each rank, then the
+  // ranks' sums added), so the screen output does not depend on which of
+  // the two a program calls.
+  template <int dim>
+  IterationRecord
+  update_multipliers(const ContactSystem                 &system,
+                     ContactSet<dim>                     &contact,
+                     const TrilinosWrappers::MPI::Vector &v_previous,
+                     const TrilinosWrappers::MPI::Vector &v)
+  {
+    const MPI_Comm comm = v.get_mpi_communicator();
+
+    // On this rank: sum_s (l1_s^new - l1_s)^2 and sum_s (l1_s^new)^2, the
+    // largest new pressure, penetration and l1 |g|, and the nodes in
+    // contact (l1 > 0).
+    double                  sums[2]   = {0., 0.};
+    double                  l1_max    = 0.;
+    double                  violation = 0., complementarity = 0.;
+    types::global_dof_index n_active = 0;
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      {
+        // v_n(x_s) = v(x_s).n_s from the node's d degrees of freedom (owned
+        // by this rank, so v needs no ghost entries)
+        const double gap =
+          contact.nodes[s].gap0 - contact.normal_displacement(v, s);
+        const double l1_new = std::max(0., contact.l1[s] - system.r * gap);
+        const double change = l1_new - contact.l1[s];
+        sums[0] += change * change;
+        sums[1] += l1_new * l1_new;
+        l1_max          = std::max(l1_max, l1_new);
+        violation       = std::max(violation, -gap); // (-g)^+: starts at 0
+        complementarity = std::max(complementarity, l1_new * std::abs(gap));
+        n_active += (l1_new > 0.);
+        contact.l1[s] = l1_new;
+      }
+
+    // All ranks: one reduction for both sums, then the count and the maxima.
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                        comm,
+                        ArrayView<double>(sums, 2));
+    n_active        = Utilities::MPI::sum(n_active, comm);
+    l1_max          = Utilities::MPI::max(l1_max, comm);
+    violation       = Utilities::MPI::max(violation, comm);
+    complementarity = Utilities::MPI::max(complementarity, comm);
+
+    // The change of v, without the rigid motions that nothing holds: here
+    // the x-translation of the disc, along which the problem does not fix
+    // v (the proximal term keeps v^k's value there), so that a change along
+    // it is no change of the solution (doc/theory.md §6).
+    // prepare_contact_solve() found them, orthonormal, so each is taken out
+    // by one projection. relative_change(x, y) is x/y, with 0/0 = 0 and
+    // x/0 = 1 (a change from nothing is a full change).
+    TrilinosWrappers::MPI::Vector change(v);
+    change -= v_previous;
+    if (system.free_motions != nullptr)
+      for (const TrilinosWrappers::MPI::Vector &w : *system.free_motions)
+        change.add(-(w * change), w);
+    const double v_norm_inf = v.linfty_norm();
+
+    IterationRecord record;
+    record.loop      = Loop::uzawa;
+    record.n_active  = n_active;
+    record.change_l1 = relative_change(std::sqrt(sums[0]), std::sqrt(sums[1]));
+    record.norm_v    = v.l2_norm();
+    record.change_v  = relative_change(change.l2_norm(), record.norm_v);
+    record.violation = relative_change(violation, v_norm_inf);
+    record.complementarity =
+      relative_change(complementarity, l1_max * v_norm_inf);
+    return record; // no friction: change_l2, change_g, stick, slip stay 0
+  }
+
   // @sect3{One contact solve, with the Uzawa iteration written out}
   //
   // The library's ContactProblem::run() calls solve(), which runs the
@@ -243,7 +340,7 @@ namespace Step1
         const NewtonStatistics inner =
           uzawa.proximal_step(system, contact, v_previous, v, k);
 
-        // Step 2, the multiplier update:
+        // Step 2, the multiplier update (the function above):
         //
         //   l1_s^{k+1} = (l1_s^k + r (v_n^{k+1}(x_s) - g0_s))^+.
         //
@@ -251,12 +348,10 @@ namespace Step1
         // fixed points l1 = (l1 + r (v_n - g0))^+ are exactly the Signorini
         // conditions: l1 >= 0, v_n <= g0, and l1 (v_n - g0) = 0 (if l1 > 0
         // the bracket must equal l1, so v_n = g0; if l1 = 0 the bracket is
-        // <= 0, so v_n <= g0). The update is a gradient ascent with step r
-        // on the dual function: where a node penetrates, its pressure grows
-        // by r times the penetration. For any r > 0 and chi > 0 the
-        // iteration converges (doc/theory.md §3.2); r sets only the speed.
+        // <= 0, so v_n <= g0). For any r > 0 and chi > 0 the iteration
+        // converges (doc/theory.md §3.2); r sets only the speed.
         const IterationRecord record =
-          uzawa.update_multipliers(system, contact, v_previous, v);
+          update_multipliers(system, contact, v_previous, v);
         step_timer.stop();
 
         pcout << "   Uzawa " << format("%4.0f", k) << ": Newton "

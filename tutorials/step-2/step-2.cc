@@ -333,7 +333,7 @@ namespace Step2
     BlockRun run;
     run.name = strategy == FrictionStrategy::nested ? "nested" : "merged";
 
-    Parameters parameters        = prm_parameters; // outlives the problem
+    Parameters parameters        = prm_parameters; // this run's variant
     parameters.friction.strategy = strategy;
     parameters.output.directory += "/block_" + run.name;
     std::ostringstream  silent; // the library's own report: not shown
@@ -462,7 +462,7 @@ end
     parameters.read_string(hertz_scene);
     parameters.material.poissons_ratio = nu;
     parameters.friction                = prm_parameters.friction;
-    parameters.friction.coefficient    = std::to_string(F);
+    parameters.friction.parameter      = std::to_string(F);
     parameters.solver                  = prm_parameters.solver;
     parameters.output                  = prm_parameters.output;
     std::ostringstream name;
@@ -553,7 +553,7 @@ end
                 ExcMessage("step-2 needs a 2D scene with Coulomb friction "
                            "(or another law g(F, l1))."));
     const bool   timing = parameters.output.print_timing;
-    const double F      = std::stod(parameters.friction.coefficient);
+    const double F      = std::stod(parameters.friction.parameter);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::filesystem::create_directories(parameters.output.directory);
 

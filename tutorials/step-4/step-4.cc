@@ -191,8 +191,9 @@ namespace Step4
     {
       const double nu     = parameters.material.poissons_ratio;
       const double E_star = parameters.material.youngs_modulus / (1 - nu * nu);
-      a =
-        std::sqrt(4. * P * parameters.obstacle.radius / (numbers::PI * E_star));
+      const double R =
+        std::stod(parameters.obstacle.values.at("Obstacle/Radius"));
+      a  = std::sqrt(4. * P * R / (numbers::PI * E_star));
       p0 = 2. * P / (numbers::PI * a);
     }
 

@@ -122,7 +122,7 @@ namespace Step5
                     const double      Q)
         : P(P)
         , Q(Q)
-        , F(std::stod(parameters.friction.coefficient))
+        , F(std::stod(parameters.friction.parameter))
     {
       const double nu     = parameters.material.poissons_ratio;
       const double E_star = parameters.material.youngs_modulus / (1 - nu * nu);

@@ -2,7 +2,7 @@
 # the --set arguments that override a scene's entries with those of the
 # text (a second 'set' of an entry in one file is an input error, so the
 # benchmark scripts pass their overrides this way).
-#   awk -f doc/prm_overrides.awk overrides.prm
+#   awk -f benchmarks/prm_overrides.awk overrides.prm
 { line = $0; sub(/#.*/, "", line); gsub(/^[ \t]+|[ \t]+$/, "", line) }
 line ~ /^subsection[ \t]/ { name = line; sub(/^subsection[ \t]+/, "", name); path[++depth] = name; next }
 line == "end" { if (depth > 0) --depth; next }

@@ -6,8 +6,12 @@
 // doc/performance.md: can a solve of this code fit in 1 KB per DoF, what
 // does that take, and what does it cost in time?
 //
-//   mpirun -np 2 build/benchmark_multigrid scene.prm refinements amg|gmg|mf
-//          [--half-width a] [--degree k] [--set "Subsection/Entry=value"]...
+//   mpirun -np 2 build/benchmarks/benchmark_multigrid scene.prm refinements
+//          amg|gmg|mf [--half-width a] [--degree k]
+//          [--set "Subsection/Entry=value"]...
+//
+// Built only with cmake -DDUALCONTACT_BUILD_BENCHMARKS=ON
+// (benchmarks/CMakeLists.txt).
 //
 // The matrix is the one the contact solver's last Newton steps solve with
 // (and its "reference linear solve" times):
@@ -39,7 +43,8 @@
 //   hanging nodes resolved by MatrixFree), chi M as a diagonal and C as a
 //   list of entries (condensed onto the masters of hanging nodes, as the
 //   program condenses them), on the active mesh and on each level; the
-//   load and the lumped mass by the library's assemble_load();
+//   load and the lumped mass by assemble_load() below (the load and mass
+//   integrals of the library's assemble_elasticity(), without K);
 //   LinearAlgebra::distributed::Vector throughout, and CG without a
 //   preconditioner on the coarsest level.
 // --set overrides an entry of the scene, as for the program (e.g. --set
@@ -51,9 +56,10 @@
 // the CG iterations, |x|, and how many doubles FEEvaluation works on at once
 // (the SIMD width deal.II was built with: 1 for Debian's package; what that
 // means for the matrix-free times is in doc/performance.md); the last line,
-// "RESULT key value ...", is what doc/benchmark_multigrid.sh reads. The program
-// checks nothing itself: the test multigrid_same_solution
-// (tests/CMakeLists.txt) compares the three.
+// "RESULT key value ...", is what benchmarks/benchmark_multigrid.sh reads.
+// The program checks nothing itself: the test
+// benchmark_multigrid_same_solution (tests/CMakeLists.txt) compares the
+// three.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -123,6 +129,91 @@ namespace
   }
 
   using DistributedVector = LinearAlgebra::distributed::Vector<double>;
+
+  /**
+   * The load b = int f.v + int_{Gamma_N} T.v (only the loads the scene has)
+   * and the lumped mass (the row sums of int u.v), the same integrals as
+   * the library's assemble_elasticity(), without K: the right-hand side and
+   * M of the matrix-free solve. The constraints are homogeneous (hanging
+   * nodes), so there is no lifting of prescribed values to assemble. The
+   * vectors have the locally owned DoFs and ghosts for every DoF the
+   * constraints write to.
+   */
+  template <int dim>
+  void
+  assemble_load(const Mapping<dim>              &mapping,
+                const DoFHandler<dim>           &dof_handler,
+                const dualcontact::Scene<dim>   &scene,
+                const AffineConstraints<double> &constraints,
+                DistributedVector               &load,
+                DistributedVector               &mass)
+  {
+    Assert(!constraints.has_inhomogeneities(),
+           ExcMessage("assemble_load() assembles no lifting"));
+    const FiniteElement<dim> &fe     = dof_handler.get_fe();
+    const unsigned int        n_dofs = fe.n_dofs_per_cell();
+    const UpdateFlags         flags =
+      update_values | update_quadrature_points | update_JxW_values;
+    FEValues<dim>     fe_values(mapping, fe, QGauss<dim>(fe.degree + 1), flags);
+    FEFaceValues<dim> fe_face_values(mapping,
+                                     fe,
+                                     QGauss<dim - 1>(fe.degree + 1),
+                                     flags);
+    const Function<dim>               *body_force = scene.body_force();
+    const std::set<types::boundary_id> traction_ids =
+      scene.ids_with(dualcontact::BoundaryCondition::traction);
+    std::vector<dealii::Vector<double>> force_values(
+      fe_values.n_quadrature_points, dealii::Vector<double>(dim)),
+      traction_values(fe_face_values.n_quadrature_points,
+                      dealii::Vector<double>(dim));
+    dealii::Vector<double>               cell_load(n_dofs), cell_mass(n_dofs);
+    std::vector<types::global_dof_index> indices(n_dofs);
+
+    // int g.phi_i over the cell or face `values` was reinit'ed on
+    const auto add_load = [&](const FEValuesBase<dim>                   &values,
+                              const std::vector<dealii::Vector<double>> &g) {
+      for (const unsigned int q : values.quadrature_point_indices())
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          cell_load(i) += g[q](fe.system_to_component_index(i).first) *
+                          values.shape_value(i, q) * values.JxW(q);
+    };
+
+    load = 0.;
+    mass = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_load = 0.;
+          cell_mass = 0.;
+          // the row sum of int u.v is int phi_i: the shape functions of a
+          // component sum to one
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              cell_mass(i) += fe_values.shape_value(i, q) * fe_values.JxW(q);
+          if (body_force != nullptr)
+            {
+              body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                            force_values);
+              add_load(fe_values, force_values);
+            }
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && traction_ids.count(face->boundary_id()))
+              if (const Function<dim> *traction =
+                    scene.traction(face->boundary_id()))
+                {
+                  fe_face_values.reinit(cell, face);
+                  traction->vector_value_list(
+                    fe_face_values.get_quadrature_points(), traction_values);
+                  add_load(fe_face_values, traction_values);
+                }
+          cell->get_dof_indices(indices);
+          constraints.distribute_local_to_global(cell_load, indices, load);
+          constraints.distribute_local_to_global(cell_mass, indices, mass);
+        }
+    load.compress(VectorOperation::add);
+    mass.compress(VectorOperation::add);
+  }
 
   /** An entry (row, column, value) of a matrix, in global DoF indices. */
   struct Entry
@@ -444,10 +535,14 @@ namespace
         "the obstacle must be the plane foundation, not '" +
           parameters.obstacle.type + "'.",
         dualcontact::exit_invalid_value);
+    const auto n =
+      dualcontact::numbers_of(parameters.obstacle.values, "Foundation/Normal");
+    const auto p =
+      dualcontact::numbers_of(parameters.obstacle.values, "Foundation/Point");
     for (unsigned int d = 0; d < dim; ++d)
       {
-        normal[d]        = parameters.obstacle.normal[d];
-        first_contact[d] = parameters.obstacle.point[d];
+        normal[d]        = n[d];
+        first_contact[d] = p[d];
       }
     normal /= normal.norm();
   }
@@ -808,8 +903,7 @@ namespace
     DistributedVector mass;
     mf_operator.initialize_dof_vector(mass);
     mf_operator.initialize_dof_vector(mf_rhs);
-    dualcontact::assemble_load<dim>(
-      mapping, dof_handler, scene, constraints, mf_rhs, &mass);
+    assemble_load<dim>(mapping, dof_handler, scene, constraints, mf_rhs, mass);
     mass *= chi;
     std::vector<Entry>                   entries;
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
@@ -994,7 +1088,7 @@ main(int argc, char *argv[])
   const std::string usage =
     "Usage: benchmark_multigrid scene.prm refinements amg|gmg|mf [--half-width "
     "a] [--degree k] [--set \"Subsection/Entry=value\" ...]\n(see the head "
-    "of contrib/benchmark_multigrid.cc)\n";
+    "of benchmarks/benchmark_multigrid.cc)\n";
   try
     {
       if (argc < 4)

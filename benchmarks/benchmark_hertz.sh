@@ -2,26 +2,28 @@
 # The Hertz benchmark: cost of a contact solve against one linear
 # elasticity solve on the same mesh, on meshes up to >= 1e6 DoFs.
 #
-#   bash doc/benchmark_hertz.sh [ranks] [cycles]
+#   bash benchmarks/benchmark_hertz.sh [ranks] [cycles]
 #
 #   ranks   number of MPI ranks (default 2)
 #   cycles  number of refinement cycles (default 5: cycle 0 has ~5e3 DoFs,
 #           each cycle multiplies them by ~4, so cycle 4 has ~1.25e6)
 #
-# SCENE=<name> runs prm/<name>.prm instead of prm/hertz.prm, TAG=<tag> names
-# the files doc/benchmark_<tag>.{log,md}, TARGET=<r> is the ratio to judge
-# against (default 10), EXTRA_PRM adds entries to the parameter file.
+# SCENE=<name> runs prm/<name>.prm instead of prm/hertz.prm, TAG=<tag>
+# names the files doc/benchmarks/benchmark_<tag>.{log,md}, TARGET=<r> is the
+# ratio to judge against (default 10), EXTRA_PRM adds entries to the
+# parameter file.
 # Runs prm/hertz.prm (or the SCENE) with these entries overridden:
 #   Refinement/Number of cycles = <cycles>, Output/Write vtu = false,
 #   Output/Directory = a temporary folder,
 #   Solver/Time a reference linear solve = true.
-# Writes doc/benchmark_<tag>.log (the screen output) and
-# doc/benchmark_<tag>.md (the table built from cycles.csv). The page
-# describes the scene as it was run (friction law, F, threshold iteration,
-# nested iteration or cold starts), read from the parameter file after the
-# overrides and EXTRA_PRM, with the program's defaults (--print-parameters)
-# for the entries it leaves out. Paths written into doc/ are relative to the
-# repository root; the temporary folder appears as <temporary folder>.
+# Writes doc/benchmarks/benchmark_<tag>.log (the screen output) and
+# doc/benchmarks/benchmark_<tag>.md (the table built from cycles.csv). The
+# page describes the scene as it was run (friction law, F, threshold
+# iteration, nested iteration or cold starts), read from the parameter file
+# after the overrides and EXTRA_PRM, with the program's defaults
+# (--print-parameters) for the entries it leaves out. Paths written into
+# doc/ are relative to the repository root; the temporary folder appears as
+# <temporary folder>.
 # The program is $DUALCONTACT if set, else <repository>/build/dualcontact.
 # KEEP_OUTPUT=1 keeps the temporary output folder (cycles.csv, iterations.csv
 # with every Newton step: CG iterations, AMG set-ups, step length, time).
@@ -35,8 +37,9 @@ cycles="${2:-5}"
 case "$np" in ''|*[!0-9]*|0) echo "benchmark_hertz: ranks must be a positive integer, not '$np'" >&2; exit 2 ;; esac
 case "$cycles" in ''|*[!0-9]*|0) echo "benchmark_hertz: cycles must be a positive integer, not '$cycles'" >&2; exit 2 ;; esac
 
-doc="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
-repo="$(cd "$doc/.." && pwd -P)"
+benchmarks="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
+repo="$(cd "$benchmarks/.." && pwd -P)"
+doc="$repo/doc"
 bin="${DUALCONTACT:-$repo/build/dualcontact}"
 if [ ! -x "$bin" ]; then
   echo "benchmark_hertz: no program at '$bin'; build it (bash contrib/build.sh) or set DUALCONTACT" >&2
@@ -58,14 +61,14 @@ repo_path() {
 bin_shown="$(repo_path "$bin")"
 
 scene="${SCENE:-hertz}"              # prm/<scene>.prm
-tag="${TAG:-$scene}"                  # names doc/benchmark_<tag>.{log,md}
+tag="${TAG:-$scene}"                  # names doc/benchmarks/benchmark_<tag>.{log,md}
 target="${TARGET:-10}"                # the ratio to judge against
 if [ ! -f "$repo/prm/$scene.prm" ]; then
   echo "benchmark_hertz: no parameter file 'prm/$scene.prm' (SCENE=$scene)" >&2
   exit 2
 fi
-log="$doc/benchmark_${tag}.log"
-md="$doc/benchmark_${tag}.md"
+log="$doc/benchmarks/benchmark_${tag}.log"
+md="$doc/benchmarks/benchmark_${tag}.md"
 
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/benchmark_hertz.XXXXXX")"
 if [ "${KEEP_OUTPUT:-0}" = 1 ]; then
@@ -83,7 +86,7 @@ out="$tmp/output"
 overrides="$tmp/overrides.prm"
 cat > "$overrides" <<EOF
 
-# ---- overrides of doc/benchmark_hertz.sh ----
+# ---- overrides of benchmarks/benchmark_hertz.sh ----
 subsection Refinement
   set Number of cycles = $cycles
 end
@@ -106,7 +109,7 @@ cat "$repo/prm/$scene.prm" "$overrides" > "$prm"
 set_args=()
 while IFS= read -r entry; do
   set_args+=(--set "$entry")
-done < <(awk -f "$doc/prm_overrides.awk" "$overrides")
+done < <(awk -f "$benchmarks/prm_overrides.awk" "$overrides")
 
 # Open MPI refuses to run as root without these.
 export OMPI_ALLOW_RUN_AS_ROOT=1
@@ -122,7 +125,7 @@ for v in SCENE TAG TARGET MPIRUN_FLAGS; do
 done
 if [ -n "${DUALCONTACT:-}" ]; then invocation="${invocation}DUALCONTACT=$bin_shown "; fi
 if [ -n "${EXTRA_PRM:-}" ]; then invocation="${invocation}EXTRA_PRM=... "; fi
-invocation="${invocation}bash doc/benchmark_hertz.sh $np $cycles"
+invocation="${invocation}bash benchmarks/benchmark_hertz.sh $np $cycles"
 date_run="$(date -u '+%Y-%m-%d %H:%M UTC')"
 cores="$(nproc 2>/dev/null || echo '?')"
 cpu="$(awk -F': *' '/^model name/ {print $2; exit}' /proc/cpuinfo 2>/dev/null || true)"
@@ -142,8 +145,8 @@ if ! "$bin" --print-parameters > "$defaults" 2> /dev/null; then
 fi
 prm_value() {  # prm_value 'Subsection/Entry' fallback
   local value
-  value="$({ awk -f "$doc/prm_overrides.awk" "$defaults"
-              awk -f "$doc/prm_overrides.awk" "$prm"; } |
+  value="$({ awk -f "$benchmarks/prm_overrides.awk" "$defaults"
+              awk -f "$benchmarks/prm_overrides.awk" "$prm"; } |
             awk -v want="$1" 'index($0, want "=") == 1 { found = substr($0, length(want) + 2) } END { print found }')"
   printf '%s' "${value:-$2}"
 }
@@ -248,7 +251,7 @@ Machine: $cores cores${cpu:+ ($cpu)}${mem_gb:+, $mem_gb GB}; $np MPI rank(s).
 Load average (1, 5, 15 min) just before the run: $load_before
 (other work on the machine inflates the wall times).
 Total run time (including mesh set-up, output and the reference solves):
-$elapsed s. Screen log: \`doc/benchmark_${tag}.log\`.${EXTRA_PRM:+ Extra entries: \`$(echo "$EXTRA_PRM" | tr "\n" " ")\`.}
+$elapsed s. Screen log: \`doc/benchmarks/benchmark_${tag}.log\`.${EXTRA_PRM:+ Extra entries: \`$(echo "$EXTRA_PRM" | tr "\n" " ")\`.}
 
 Columns: contact nodes = nodes on the contact boundary, active = nodes in
 contact at the end; Uzawa / Newton / CG = steps of the Uzawa and Newton iterations and CG

@@ -1,0 +1,113 @@
+// Refinement indicators: how the cells are ranked for refinement between
+// cycles (<Refinement/Strategy>). Each kind is one file in
+// source/refinement_indicators/ (or in a program of one's own) that
+// registers its name, its help text, its own entries and the function that
+// computes the indicator; refinement.h marks the cells by it.
+//
+// A program adds one with, e.g.,
+//
+//   const bool registered = dualcontact::register_refinement_indicator(
+//     "my indicator",
+//     {"what it ranks the cells by", nullptr, {}, my_indicator<2>,
+//      my_indicator<3>});
+//
+// and a scene chooses it with `set Strategy = my indicator`.
+#ifndef dualcontact_refinement_indicator_h
+#define dualcontact_refinement_indicator_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <dualcontact/contact_set.h>
+#include <dualcontact/parameters.h>
+
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /** What an indicator may read of a solved mesh. */
+  template <int dim>
+  struct IndicatorInput
+  {
+    const Mapping<dim>                  &mapping;
+    const DoFHandler<dim>               &dof_handler;
+    const TrilinosWrappers::MPI::Vector &solution; // ghosted
+    const ContactSet<dim>               &contact;
+    // the boundary ids with the condition 'contact' (empty without)
+    const std::set<types::boundary_id> &contact_ids;
+    const Parameters                   &parameters;
+    // the entries of the indicator's own (RefinementIndicatorKind::entries)
+    const EntryValues &values;
+    // the nodal multiplier field (l1, l2_1, ..) on Gamma_C, ghosted, with
+    // the hanging nodes filled (ContactSet::write_fields); computed on call
+    std::function<TrilinosWrappers::MPI::Vector()> multipliers;
+  };
+
+  /**
+   * One value per active cell (those of the cells not owned are not read);
+   * the largest are refined.
+   */
+  template <int dim>
+  using IndicatorFunction =
+    std::function<Vector<float>(const IndicatorInput<dim> &input)>;
+
+  /** What a refinement indicator registers from its own file. */
+  struct RefinementIndicatorKind
+  {
+    /** What <Refinement/Strategy> = this name does: a sentence or two. */
+    std::string help;
+
+    /** Declares its own entries (in subsection Refinement), or nullptr. */
+    void (*declare_parameters)(ParameterHandler &prm) = nullptr;
+
+    /** Its own entries, "Refinement/Entry". */
+    std::vector<std::string> entries;
+
+    /**
+     * The indicator. Empty functions: every cell is refined (then the
+     * fractions have no effect).
+     */
+    IndicatorFunction<2> indicator_2d;
+    IndicatorFunction<3> indicator_3d;
+
+    bool
+    refines_every_cell() const
+    {
+      return !indicator_2d;
+    }
+  };
+
+  /**
+   * Make `name` known to <Refinement/Strategy>. Called once per kind, at
+   * load time. Returns true (for the static initialiser).
+   */
+  bool
+  register_refinement_indicator(const std::string      &name,
+                                RefinementIndicatorKind kind);
+
+  /** The registered names, in alphabetical order. */
+  std::vector<std::string>
+  refinement_indicator_names();
+
+  /** The kind registered as `name`; InputError naming the entry. */
+  const RefinementIndicatorKind &
+  refinement_indicator_kind(const std::string &name);
+
+  /** The indicator of the scene's <Refinement/Strategy>. */
+  template <int dim>
+  Vector<float>
+  compute_indicator(const IndicatorInput<dim> &input);
+} // namespace dualcontact
+
+#endif
