@@ -382,9 +382,10 @@ namespace dualcontact
     data.elliptic              = true;
     data.higher_order_elements = higher_order;
     data.smoother_sweeps       = 2;
-    // No connection is dropped when aggregating: with 0.02 the Hertz meshes
-    // took 118 instead of 46 CG iterations at 1.2e6 DoFs, and more memory
-    // (doc/performance.md).
+    // No connection is dropped when aggregating: dropping the weak ones
+    // (threshold 0.02) more than doubles the CG iterations on the Hertz
+    // meshes and takes more memory (doc/performance.md, "What was tried and
+    // not kept").
     data.aggregation_threshold = 0.;
 
     // deal.II 9.4 only hands ML the translations; give it the rotations too

@@ -19,25 +19,12 @@ namespace dualcontact
 
   namespace
   {
-    // Peak resident memory (column memory_mb of cycles.csv, VmHWM summed
-    // over the ranks) of shipped scenes refined further, one rank, measured
-    // on the development machine (deal.II 9.4, Trilinos ML):
-    //   2D prm/paper_block.prm (5 global cycles): 374 MiB at 103,362 DoFs,
-    //      976 MiB at 411,522 DoFs: 2049 bytes per DoF, 172 MiB at 0 DoFs;
-    //   2D prm/hertz.prm (5 global cycles): 756 MiB at 303,362 DoFs,
-    //      2551 MiB at 1,207,298 DoFs: 2083 bytes per DoF, 153 MiB at 0;
-    //   3D a 2 x 2 x 1 box on the foundation (4 x 4 x 2 cells, sliders on
-    //      x = 0 and y = 0, top pressure 1; 5 global cycles): 525 MiB at
-    //      55,539 DoFs, 3043 MiB at 418,275 DoFs: 7278 bytes per DoF,
-    //      140 MiB at 0;
-    //   prm/paper_block.prm on 2 ranks: 178 MiB per rank at 0 DoFs.
-    // With the lumped proximal mass and the Newton matrix formed in place
-    // (doc/performance.md), 2D prm/hertz.prm and prm/hertz_friction.prm on
-    // 2 ranks (5 global cycles) take 1.49 and 1.56 kB per DoF up to
-    // 1,207,298 DoFs (the peak is the AMG set-up). The 3D figure was
-    // measured with an assembled mass matrix and is an upper bound. Rounded up:
-    // the check is to refuse what cannot fit, not to predict the peak to the
-    // megabyte.
+    // Bounds of the peak resident memory (column memory_mb of cycles.csv,
+    // VmHWM summed over the ranks) per DoF and per rank, from the
+    // measurements of doc/performance.md (section Memory; the peak is the
+    // AMG set-up), rounded up: the check is to refuse what cannot fit, not
+    // to predict the peak to the megabyte. The 3D bound was measured with an
+    // assembled mass matrix and is an upper bound.
     constexpr double bytes_per_dof_2d = 1700.;
     constexpr double bytes_per_dof_3d = 7300.;
     constexpr double bytes_per_rank   = 180. * 1024. * 1024.;

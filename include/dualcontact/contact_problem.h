@@ -36,6 +36,7 @@
 #include <dualcontact/uzawa_iteration.h>
 
 #include <iostream>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -340,11 +341,11 @@ namespace dualcontact
     // the probe points, checked on the first mesh
     Probes<dim> probes;
 
-    // the (cycle, file) lists of the .pvd records of the volume and of the
-    // contact boundary
-    std::vector<std::pair<double, std::string>> pvtu_records;
-    std::vector<std::pair<double, std::string>> contact_pvtu_records;
-    std::string                                 recorded_parameters;
+    // the .pvd record of each output ("solution", "contact"): its (cycle,
+    // .pvtu file) list; and the parameter listing written with the output
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+                pvd_records;
+    std::string recorded_parameters;
   };
 } // namespace dualcontact
 

@@ -1,11 +1,15 @@
 // All run-time parameters of a dualcontact scene: one struct per subsection of
-// the .prm file, each declaring its entries (pattern, default, help text with
-// units) right beside the code that parses them.
+// the .prm file, each with its own file in source/parameters/ that declares
+// its entries (pattern, default, help text with units), parses them, checks
+// them (alone, against the dimension or the boundary conditions) and says
+// which of them have no effect in a scene.
 #ifndef dualcontact_parameters_h
 #define dualcontact_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
+
+#include <dualcontact/name_table.h>
 
 #include <map>
 #include <string>
@@ -17,6 +21,7 @@ namespace dualcontact
   using dealii::types::boundary_id;
 
   class ParameterReader;
+  struct Parameters;
 
   /**
    * The entries a plugin (an obstacle kind, a refinement indicator) reads,
@@ -56,10 +61,33 @@ namespace dualcontact
     frictionless // g^0 = F times the frictionless contact pressure
   };
 
+  /** The names of the choices, as the .prm file writes them. */
+  const NameTable<GeometryType> &
+  geometry_type_names();
+  const NameTable<BoundaryCondition> &
+  boundary_condition_names();
+  const NameTable<FrictionStrategy> &
+  friction_strategy_names();
+  const NameTable<InitialThreshold> &
+  initial_threshold_names();
+
   std::string
   to_string(const BoundaryCondition condition);
   std::string
   to_string(const GeometryType type);
+
+  /**
+   * Entries that have no effect in a scene when `applies`, and why: each
+   * subsection gives its own (ineffective_rules()), and
+   * Parameters::ineffective_entries() names those the input gave.
+   */
+  struct IneffectiveRule
+  {
+    bool                     applies;
+    std::string              subsection;
+    std::vector<std::string> entries;
+    std::string              why;
+  };
 
   /**
    * A curved boundary part of a mesh read from a file: the boundary faces
@@ -85,6 +113,9 @@ namespace dualcontact
     kind_name() const;
   };
 
+  const NameTable<BoundaryManifold::Kind> &
+  manifold_kind_names();
+
   /** Geometry and initial mesh. */
   struct GeometryParameters
   {
@@ -109,6 +140,21 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /**
+     * The shape against the dimension (counts of coordinates, the ids'
+     * kinds of manifold), the magnitudes (Parameters::check_magnitudes), a
+     * mesh file named; throws InputError.
+     */
+    void
+    check(const Parameters &parameters) const;
+    /** The magnitudes of the lengths and radii (see check_magnitudes). */
+    void
+    check_magnitudes() const;
+    /** Pre-refinement refines toward the contact boundary: it needs one. */
+    void
+    check_pre_refinement(const Parameters &parameters) const;
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
   };
 
   /** Isotropic linear elasticity; plane strain in 2D. */
@@ -126,6 +172,9 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /** E within the magnitudes the solver represents (exit 5). */
+    void
+    check_magnitudes() const;
   };
 
   /** Which condition holds on which boundary id, with its data. */
@@ -144,6 +193,9 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /** The ids against the geometry, the data against the conditions. */
+    void
+    check(const Parameters &parameters) const;
   };
 
   /** Volume loads. */
@@ -174,6 +226,15 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /**
+     * With a contact boundary: the kind's own check, and the displacement
+     * against the dimension. Defined in source/parameters/obstacle.cc.
+     */
+    void
+    check(const Parameters &parameters) const;
+    /** The entries of the kinds the scene's kind does not read. */
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
   };
 
   /** Friction law on the contact boundary. */
@@ -194,6 +255,11 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /** A law with friction needs contact, and its own entry. */
+    void
+    check(const Parameters &parameters) const;
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
   };
 
   /**
@@ -227,6 +293,8 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
   };
 
   /** The sequence of meshes. */
@@ -249,6 +317,8 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
   };
 
   /** How much of a run the screen shows (the CSV files get everything). */
@@ -258,6 +328,9 @@ namespace dualcontact
     normal,  // and one line per Uzawa and threshold step, the cycle's results
     detailed // and one line per Newton step
   };
+
+  const NameTable<Verbosity> &
+  verbosity_names();
 
   /** What is written where. */
   struct OutputParameters
@@ -274,6 +347,9 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /** One coordinate per dimension in every probe point. */
+    void
+    check(const Parameters &parameters) const;
   };
 
   /** An exact solution, if the scene has one: errors are then reported. */
@@ -289,6 +365,8 @@ namespace dualcontact
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
   };
 
   /**
@@ -329,7 +407,11 @@ namespace dualcontact
     void
     read_string(const std::string &text, const std::string &overlay = "");
 
-    /** Cross-checks of entries against each other; throws InputError. */
+    /**
+     * The checks of the subsections that need more than their own entries
+     * (the dimension, the boundary conditions), in a fixed order (the first
+     * error found is reported); throws InputError.
+     */
     void
     check_consistency() const;
 

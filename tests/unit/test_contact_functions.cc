@@ -385,7 +385,7 @@ TEST_CASE("Friction laws: the threshold from the pressure, written once",
 namespace
 {
   // A law from outside the library: a coefficient that falls with the
-  // pressure, g = F l1 / (1 + l1 / p_ref) (step-2's extension).
+  // pressure, g = F l1 / (1 + l1 / p_ref) (step-3's extension).
   class PressureDependent : public FrictionLaw
   {
   public:

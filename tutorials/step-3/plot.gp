@@ -1,38 +1,57 @@
-# Figures of step-3 from the cycles.csv of its six runs (output/<run>/).
-# Run from this folder after the program: gnuplot plot.gp
-#   work_precision.svg  pressure error against cumulative wall time
-#   error_vs_dofs.svg   pressure error against the number of DoFs
-set terminal svg size 720,520 dynamic noenhanced font "sans,13"
-set datafile separator ","
-set logscale xy
-set format y "%g"
+# The figures of step-3 (README.md), from the CSV files the program writes
+# into output/. Run from this folder: gnuplot plot.gp
+set datafile separator ','
+set terminal svg size 720,460 dynamic font 'sans,13'
 set grid
+
+# Part 1: the multipliers along the wall (the merged solution on the finest
+# mesh). Slip where |l2| = F l1.
+set output 'stick_slip.svg'
+set title 'Part 1: the block against the wall (F = 0.3), finest mesh'
+set xlabel 'position along the wall y'
+set ylabel 'traction'
+set xrange [0:1]
+set yrange [0:22]
+set key at graph 0.03, graph 0.62 left top box opaque
+plot 'output/contact.csv' using 1:2 skip 1 with lines lw 2 lc rgb '#1f77b4' title 'pressure l1', \
+     ''                   using 1:6 skip 1 with lines lw 2 dt 2 lc rgb '#d62728' title 'threshold F l1', \
+     ''                   using 1:4 skip 1 with lines lw 2 lc rgb '#2ca02c' title 'tangential traction |l2|', \
+     ''                   using 1:($7 == 2 ? $4 : 1/0) skip 1 with points pt 7 ps 0.6 lc rgb '#2ca02c' title 'slip nodes'
+
+# Part 1: the threshold iteration's convergence against the Uzawa steps it
+# costs, on the first mesh (cold start).
+set output 'threshold_history.svg'
+set title 'Part 1: the threshold iteration on the first mesh'
+set xlabel 'Uzawa steps so far'
+set ylabel 'd(g) = |g_{new} - g| / |g_{new}|'
+set logscale y
+set format y '10^{%L}'
+set xrange [0:*]
+set yrange [1e-10:1e4]
+set key default
 set key top right box opaque
-set ylabel "relative L2 error of the contact pressure on Γ_C"
+plot 'output/threshold_history.csv' using 2:(strcol(1) eq 'nested' ? $3 : 1/0) skip 1 with linespoints lw 2 pt 7 lc rgb '#ff7f0e' title 'nested: after each given-threshold solve', \
+     ''                             using 2:(strcol(1) eq 'merged' ? $3 : 1/0) skip 1 with linespoints lw 2 pt 5 lc rgb '#1f77b4' title 'merged: after each Uzawa step', \
+     1e-6 with lines dt 2 lc rgb '#7f7f7f' title 'threshold tolerance'
+unset logscale y
+set format y '%g'
 
-strategies = "global kelly contact"
-colour(i) = word("#1f77b4 #ff7f0e #2ca02c", i)
-file(s, start) = sprintf("output/%s-%s/cycles.csv", s, start)
-
-set output "work_precision.svg"
-set title "What accuracy costs: error against the wall time of all cycles so far"
-set xlabel "cumulative wall time (time_total) [s]"
-set format x "%g"
-plot for [i=1:3] file(word(strategies, i), "nested") \
-       using "time_total":"pressure_error" with linespoints \
-       lw 2 pt 7 lc rgb colour(i) dt 1 title word(strategies, i)." nested", \
-     for [i=1:3] file(word(strategies, i), "cold") \
-       using "time_total":"pressure_error" with linespoints \
-       lw 2 pt 6 lc rgb colour(i) dt 2 title word(strategies, i)." cold"
-
-set output "error_vs_dofs.svg"
-set title "Error against degrees of freedom (nested and cold runs coincide)"
-set xlabel "degrees of freedom N"
-set format x "%g"
-plot for [i=1:3] file(word(strategies, i), "nested") \
-       using "dofs":"pressure_error" with linespoints \
-       lw 2 pt 7 lc rgb colour(i) title word(strategies, i), \
-     0.0722 * (x / 1378)**(-0.5) with lines lc rgb "gray" dt 3 lw 1.5 \
-       title "N^(-1/2), O(h)", \
-     0.0722 * (x / 1378)**(-1) with lines lc rgb "black" dt 3 lw 1.5 \
-       title "N^(-1)"
+# Part 2: Hertz at nu = 0.3, frictionless against Coulomb F = 0.3.
+set output 'hertz_friction.svg'
+set title 'Part 2: Hertz contact, nu = 0.3'
+set xlabel 'x'
+set ylabel 'traction'
+set xrange [-0.12:0.12]
+set yrange [-20:95]
+set key default
+set key top center horizontal maxrows 3 box opaque
+# Hertz's pressure, a = 0.1, p0 = 2 P / (pi a)
+hertz(x) = abs(x) < 0.1 ? 54.94505494505495 * sqrt(1 - x**2 / 0.01) : 0
+set samples 1001
+plot hertz(x) with lines lw 1 lc rgb '#000000' title 'Hertz', \
+     'output/hertz_nu0.3_F0.csv'   using 1:2 skip 1 with lines lw 2 dt 2 lc rgb '#7f7f7f' title 'l1, frictionless', \
+     'output/hertz_nu0.3_F0.3.csv' using 1:2 skip 1 with lines lw 2 lc rgb '#1f77b4' title 'l1, F = 0.3', \
+     ''                            using 1:6 skip 1 with lines lw 1 dt 3 lc rgb '#d62728' title '±F l1', \
+     ''                            using 1:(-$6) skip 1 with lines lw 1 dt 3 lc rgb '#d62728' notitle, \
+     ''                            using 1:3 skip 1 with lines lw 2 lc rgb '#2ca02c' title 'l2, F = 0.3', \
+     ''                            using 1:($7 == 1 ? $3 : 1/0) skip 1 with points pt 7 ps 0.4 lc rgb '#000000' title 'stick nodes'

@@ -1,12 +1,12 @@
 #!/bin/bash
 # Regenerate the results of step-5: run it on 2 MPI ranks (screen output in
 # output/step-5.out, the library's in output/screen.log), then draw
-# profile.svg and zones.svg with gnuplot.
+# pressure.svg and stress_axis.svg with gnuplot.
 # Run from anywhere; the program is ../../build/tutorials/step-5 unless
-# STEP5=<path> says otherwise.
+# STEP4=<path> says otherwise.
 set -euo pipefail
 cd "$(dirname "$0")"
-program=${STEP5:-../../build/tutorials/step-5}
+program=${STEP4:-../../build/tutorials/step-5}
 # Open MPI refuses to run as root unless told
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
@@ -17,4 +17,4 @@ end=$(date +%s.%N)
 mv step-5.out output/
 awk -v s="$start" -v e="$end" 'BEGIN { printf "make_results.sh: step-5 took %.1f s on 2 ranks\n", e - s }'
 gnuplot plot.gp
-echo "make_results.sh: wrote profile.svg and zones.svg"
+echo "make_results.sh: wrote pressure.svg and stress_axis.svg"

@@ -1,0 +1,222 @@
+// ContactProblem, what a solved mesh is measured by: the contact zone (its
+// extent, the largest pressure, the stick and slip zones), the reactions on
+// the prescribed boundaries and the obstacle, and the comparison of the
+// nested solve with a cold start.
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_accessor.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <dualcontact/contact_functions.h>
+#include <dualcontact/contact_output.h>
+#include <dualcontact/contact_problem.h>
+#include <dualcontact/input_error.h>
+#include <dualcontact/output_directory.h>
+#include <dualcontact/plausibility.h>
+#include <dualcontact/postprocess.h>
+#include <dualcontact/refinement.h>
+#include <dualcontact/refinement_indicator.h>
+#include <dualcontact/run_size.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+namespace dualcontact
+{
+  template <int dim>
+  ContactZoneFigures
+  ContactProblem<dim>::measure_contact_zone() const
+  {
+    TimerOutput::Scope    t(computing_timer, "measure contact zone");
+    ContactZoneFigures    figures;
+    double                force = 0, peak = 0;
+    Tensor<1, dim>        on_obstacle;
+    std::vector<ZoneNode> local;
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        force += contact_set.nodes[s].weight * contact_set.l1[s];
+        on_obstacle += contact_set.nodal_force(s);
+        peak = std::max(peak, contact_set.l1[s]);
+        ZoneNode node;
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          node.t[k] = contact_set.nodes[s].position * contact_set.tangents[k];
+        node.weight = contact_set.nodes[s].weight;
+        node.gap0   = contact_set.nodes[s].gap0;
+        node.l1     = contact_set.l1[s];
+        node.status = contact_set.status(s);
+        local.push_back(node);
+      }
+    figures.contact_force = Utilities::MPI::sum(force, mpi_communicator);
+    for (unsigned int c = 0; c < dim; ++c)
+      on_obstacle[c] = Utilities::MPI::sum(on_obstacle[c], mpi_communicator);
+    // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s),
+    // and its part in the tangent plane of Gamma_C's mean direction
+    const Tensor<1, dim> resultant = -on_obstacle;
+    figures.tangential_force =
+      (resultant - (resultant * contact_set.normal) * contact_set.normal)
+        .norm();
+    figures.max_pressure = Utilities::MPI::max(peak, mpi_communicator);
+    for (unsigned int c = 0; c < dim; ++c)
+      figures.resultant[c] = resultant[c];
+
+    // the half-width (2D) or radius (3D) of the zone and of its stick zone
+    std::vector<ZoneNode> nodes;
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, local))
+      nodes.insert(nodes.end(), part.begin(), part.end());
+    const ContactZoneShape shape =
+      contact_zone_shape(nodes,
+                         dim - 1,
+                         0.25 * contact_set.min_face_diameter());
+    figures.half_width      = shape.width.nodes;
+    figures.edge_half_width = shape.width.extrapolated;
+    figures.area            = shape.area;
+    figures.extent          = shape.extent;
+    figures.mirrored        = shape.mirrored;
+    if (contact_set.friction)
+      figures.stick_half_width = shape.stick_width;
+
+    // errors against what the scene knows
+    if (const Function<dim> *exact = scene.exact_pressure())
+      {
+        TrilinosWrappers::MPI::Vector multipliers, threshold;
+        multiplier_fields(multipliers, threshold);
+        figures.pressure_error =
+          compute_pressure_error(mapping,
+                                 dof_handler,
+                                 multipliers,
+                                 scene.ids_with(BoundaryCondition::contact),
+                                 *exact);
+        if (!std::isfinite(figures.pressure_error))
+          throw InputError("The entry <Exact solution/Contact pressure> is "
+                           "not a finite number (NaN or infinity) at some "
+                           "point of Gamma_C: '" +
+                             parameters.exact.contact_pressure + "'.",
+                           exit_invalid_value);
+      }
+    if (parameters.exact.contact_half_width > 0.)
+      figures.half_width_error =
+        figures.edge_half_width / parameters.exact.contact_half_width - 1.;
+    if (parameters.exact.stick_half_width > 0.)
+      figures.stick_half_width_error =
+        figures.stick_half_width / parameters.exact.stick_half_width - 1.;
+    if (parameters.exact.peak_pressure > 0.)
+      figures.peak_pressure_error =
+        figures.max_pressure / parameters.exact.peak_pressure - 1.;
+    return figures;
+  }
+
+  template <int dim>
+  ColdStartFigures
+  ContactProblem<dim>::compare_with_cold_start()
+  {
+    ColdStartFigures figures;
+    if (!carried || !parameters.refinement.compare_cold_start)
+      return figures;
+    TimerOutput::Scope t(computing_timer, "cold start (comparison)");
+    report.start_cold_start();
+    ContactSet<dim> cold_set = contact_set;
+    cold_set.reset_multipliers();
+    TrilinosWrappers::MPI::Vector v_cold(locally_owned_dofs, mpi_communicator);
+    constraints.distribute(v_cold);
+    // its steps are neither printed nor logged
+    const ContactStatistics cold = threshold_iteration.solve(
+      contact_system(), cold_set, v_cold, nullptr, held_by_friction_pressure);
+    report.end_cold_start();
+    figures.uzawa_steps     = cold.uzawa_steps;
+    figures.newton_steps    = cold.newton_steps;
+    figures.threshold_steps = cold.threshold_steps;
+
+    // in the energy norm a(e, e) = e.(K - chi M)e, blind to the rigid
+    // motions that only the proximal term fixes (a semi-coercive scene
+    // keeps the one its start selects); on the condensed matrices, i.e.
+    // over the unconstrained DoFs
+    const auto energy = [&](TrilinosWrappers::MPI::Vector e) {
+      homogeneous_constraints.set_zero(e);
+      TrilinosWrappers::MPI::Vector Ke(e), Me(e);
+      system_matrix.vmult(Ke, e);
+      mass.vmult(Me, e);
+      return std::sqrt(std::max(e * Ke - chi * (e * Me), 0.));
+    };
+    TrilinosWrappers::MPI::Vector difference(locally_owned_dofs,
+                                             mpi_communicator);
+    difference = solution;
+    difference -= v_cold;
+    figures.difference_v = relative_change(energy(difference), energy(v_cold));
+    double sums[2]       = {0., 0.};
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        const double m = contact_set.nodes[s].weight;
+        sums[0] += m * std::pow(contact_set.l1[s] - cold_set.l1[s], 2);
+        sums[1] += m * cold_set.l1[s] * cold_set.l1[s];
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                        mpi_communicator,
+                        ArrayView<double>(sums, 2));
+    figures.difference_l1 =
+      relative_change(std::sqrt(sums[0]), std::sqrt(sums[1]));
+    return figures;
+  }
+
+  template <int dim>
+  ReactionFigures
+  ContactProblem<dim>::compute_reactions(const ContactZoneFigures &zone) const
+  {
+    TimerOutput::Scope t(computing_timer, "postprocess");
+    // one more pass over the cells: only where there are supports
+    ReactionFigures figures;
+    if (scene.ids_with(BoundaryCondition::fixed).empty() &&
+        scene.ids_with(BoundaryCondition::normal_fixed).empty())
+      figures.applied_load = applied_load;
+    else
+      figures = dualcontact::compute_reactions(mapping,
+                                               dof_handler,
+                                               scene,
+                                               constraints,
+                                               hanging_node_constraints,
+                                               solution);
+
+    // Equilibrium of the whole body: contact force, reactions and applied
+    // loads sum to zero, up to the solver tolerances.
+    std::array<double, 3> sum   = figures.applied_load;
+    double                scale = std::sqrt(norm_square(figures.applied_load));
+    for (const auto &[id, force] : figures.on_id)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          sum[c] += force[c];
+        scale = std::max(scale, std::sqrt(norm_square(force)));
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      sum[c] += zone.resultant[c];
+    scale             = std::max(scale, std::sqrt(norm_square(zone.resultant)));
+    figures.imbalance = scale > 0. ? std::sqrt(norm_square(sum)) / scale : 0.;
+    return figures;
+  }
+
+
+  template ContactZoneFigures
+  ContactProblem<2>::measure_contact_zone() const;
+  template ContactZoneFigures
+  ContactProblem<3>::measure_contact_zone() const;
+  template ColdStartFigures
+  ContactProblem<2>::compare_with_cold_start();
+  template ColdStartFigures
+  ContactProblem<3>::compare_with_cold_start();
+  template ReactionFigures
+  ContactProblem<2>::compute_reactions(const ContactZoneFigures &zone) const;
+  template ReactionFigures
+  ContactProblem<3>::compute_reactions(const ContactZoneFigures &zone) const;
+} // namespace dualcontact

@@ -1,0 +1,193 @@
+// <Boundary conditions>: which condition holds on which boundary id.
+#include <deal.II/base/utilities.h>
+
+#include <dualcontact/input_error.h>
+#include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
+
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * Split "k1: v1, k2: v2" into (key, value) pairs, keeping the order and
+     * any repeated key (repeats are an error the caller reports).
+     */
+    std::vector<std::pair<boundary_id, std::string>>
+    split_id_map(const std::string &text)
+    {
+      std::vector<std::pair<boundary_id, std::string>> result;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          if (item.empty())
+            continue;
+          const auto        colon = item.find(':');
+          const std::string key   = Utilities::trim(item.substr(0, colon));
+          const std::string value = Utilities::trim(item.substr(colon + 1));
+          result.emplace_back(
+            static_cast<boundary_id>(Utilities::string_to_int(key)), value);
+        }
+      return result;
+    }
+
+    std::map<boundary_id, std::string>
+    parse_id_map(const std::string &text, const std::string &entry)
+    {
+      std::map<boundary_id, std::string> result;
+      for (const auto &[id, value] : split_id_map(text))
+        if (!result.emplace(id, value).second)
+          throw InputError("The entry <" + entry + "> names boundary id " +
+                             std::to_string(id) + " twice.",
+                           exit_inconsistent);
+      return result;
+    }
+
+    // The pattern of an "id: value" list (ids 0..255).
+    Patterns::Map
+    id_map_pattern(const Patterns::PatternBase &value_pattern)
+    {
+      return Patterns::Map(Patterns::Integer(0, 255),
+                           value_pattern,
+                           0,
+                           Patterns::Map::max_int_value,
+                           ",",
+                           ":");
+    }
+
+  } // namespace
+
+  const NameTable<BoundaryCondition> &
+  boundary_condition_names()
+  {
+    static const NameTable<BoundaryCondition> table = {
+      {BoundaryCondition::free, "free"},
+      {BoundaryCondition::fixed, "fixed"},
+      {BoundaryCondition::normal_fixed, "normal fixed"},
+      {BoundaryCondition::traction, "traction"},
+      {BoundaryCondition::contact, "contact"}};
+    return table;
+  }
+
+  std::string
+  to_string(const BoundaryCondition condition)
+  {
+    return boundary_condition_names().name(condition);
+  }
+
+  BoundaryCondition
+  BoundaryParameters::condition(const boundary_id id) const
+  {
+    const auto it = conditions.find(id);
+    return it == conditions.end() ? BoundaryCondition::free : it->second;
+  }
+
+  std::vector<boundary_id>
+  BoundaryParameters::ids_with(const BoundaryCondition wanted) const
+  {
+    std::vector<boundary_id> ids;
+    for (const auto &[id, condition] : conditions)
+      if (condition == wanted)
+        ids.push_back(id);
+    return ids;
+  }
+
+  void
+  BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry(
+      "Conditions",
+      "",
+      id_map_pattern(Patterns::Selection(boundary_condition_names().names())),
+      "The condition on each boundary id, as a list 'id: condition, id: "
+      "condition'. Conditions: 'free' (zero traction), 'fixed' (all "
+      "displacement components prescribed, see 'Displacements'), 'normal "
+      "fixed' (zero normal displacement, tangential one free: a frictionless "
+      "slider), 'traction' (prescribed traction, see 'Tractions'), 'contact' "
+      "(unilateral contact with the rigid foundation, with the friction law "
+      "of subsection Friction). Ids not listed are free. An id may appear "
+      "only once.");
+    prm.declare_entry(
+      "Displacements",
+      "",
+      id_map_pattern(Patterns::Anything()),
+      "Prescribed displacement on 'fixed' ids, as 'id: u_x; u_y' [length]; "
+      "each component an expression in x, y (z) with the constants pi, E, "
+      "nu, lambda, mu (no commas or colons inside). Fixed ids not listed "
+      "here are clamped (zero displacement).");
+    prm.declare_entry(
+      "Tractions",
+      "",
+      id_map_pattern(Patterns::Anything()),
+      "Prescribed traction on 'traction' ids, as 'id: T_x; T_y' [stress = "
+      "force/length^2]; each component an expression in x, y (z) with the "
+      "constants pi, E, nu, lambda, mu (no commas or colons inside). A "
+      "pressure p on a face with outer normal n is the traction -p n. Every "
+      "'traction' id must be listed.");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    conditions.clear();
+    for (const auto &[id, name] :
+         parse_id_map(prm.get("Conditions"), "Boundary conditions/Conditions"))
+      conditions[id] = boundary_condition_names().value(name);
+    displacements = parse_id_map(prm.get("Displacements"),
+                                 "Boundary conditions/Displacements");
+    tractions =
+      parse_id_map(prm.get("Tractions"), "Boundary conditions/Tractions");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryParameters::check(const Parameters &parameters) const
+  {
+    const GeometryParameters &geometry = parameters.geometry;
+    const unsigned int        dim      = geometry.dimension;
+    const unsigned int        n_ids = geometry.type == GeometryType::rectangle ?
+                                        2 * dim :
+                                      geometry.type == GeometryType::quarter_disc ? 3 :
+                                                                                    2;
+    const std::string         shape = to_string(geometry.type);
+    // a mesh file's ids are checked once it is read (Scene)
+    for (const auto &[id, condition] : conditions)
+      if (geometry.type != GeometryType::mesh_file && id >= n_ids)
+        throw InputError("The entry <Boundary conditions/Conditions> names "
+                         "boundary id " +
+                           std::to_string(id) + ", which the geometry '" +
+                           shape + "' does not have (its ids are 0 to " +
+                           std::to_string(n_ids - 1) + ").",
+                         exit_inconsistent);
+
+    const auto check_data = [&](const std::map<boundary_id, std::string> &data,
+                                const BoundaryCondition wanted,
+                                const std::string      &entry) {
+      for (const auto &[id, expression] : data)
+        if (condition(id) != wanted)
+          throw InputError("The entry <Boundary conditions/" + entry +
+                             "> gives data for boundary id " +
+                             std::to_string(id) + ", whose condition is '" +
+                             to_string(condition(id)) + "', not '" +
+                             to_string(wanted) + "'.",
+                           exit_inconsistent);
+    };
+    check_data(displacements, BoundaryCondition::fixed, "Displacements");
+    check_data(tractions, BoundaryCondition::traction, "Tractions");
+    for (const boundary_id id : ids_with(BoundaryCondition::traction))
+      if (tractions.count(id) == 0)
+        throw InputError("Boundary id " + std::to_string(id) +
+                           " has the condition 'traction' but the entry "
+                           "<Boundary conditions/Tractions> gives no traction "
+                           "for it.",
+                         exit_inconsistent);
+  }
+} // namespace dualcontact

@@ -1,0 +1,30 @@
+// <Loads>: volume loads.
+#include <dualcontact/parameters.h>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  void
+  LoadParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    prm.declare_entry(
+      "Body force",
+      "0; 0",
+      Patterns::Anything(),
+      "Body force f per unit volume, 'f_x; f_y' (one component per "
+      "dimension) [force/length^3]; each an expression in x, y (z) with the "
+      "constants pi, E, nu, lambda, mu. All zero: no body force is "
+      "assembled.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    body_force = prm.get("Body force");
+    prm.leave_subsection();
+  }
+} // namespace dualcontact

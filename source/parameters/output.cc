@@ -1,0 +1,105 @@
+// <Output>: what is written where, and how much the screen shows.
+#include <deal.II/base/utilities.h>
+
+#include <dualcontact/input_error.h>
+#include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  const NameTable<Verbosity> &
+  verbosity_names()
+  {
+    static const NameTable<Verbosity> table = {{Verbosity::quiet, "quiet"},
+                                               {Verbosity::normal, "normal"},
+                                               {Verbosity::detailed,
+                                                "detailed"}};
+    return table;
+  }
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Folder for all output files; created if missing.");
+    prm.declare_entry("Write vtu",
+                      "true",
+                      Patterns::Bool(),
+                      "Write .pvtu/.vtu files (one set per cycle) for "
+                      "ParaView.");
+    prm.declare_entry("Print timing",
+                      "true",
+                      Patterns::Bool(),
+                      "Print wall times on screen. Tests switch this off so "
+                      "that the screen output is deterministic.");
+    prm.declare_entry(
+      "Verbosity",
+      "normal",
+      Patterns::Selection(verbosity_names().names()),
+      "How much the screen shows (no unit). quiet: the scene and one line "
+      "per refinement cycle, then the summary table; normal: also a legend, "
+      "one line per Uzawa step and per threshold step, and each cycle's "
+      "results; detailed: also one line per Newton step with its CG "
+      "iterations. Warnings and errors are always shown; cycles.csv and "
+      "iterations.csv hold everything at every level.");
+    prm.declare_entry(
+      "Probe points",
+      "",
+      Patterns::List(Patterns::List(Patterns::Double(), 2, 3, ","),
+                     0,
+                     Patterns::List::max_int_value,
+                     ";"),
+      "Points of the body [length] at which the displacement [length] and "
+      "the stress [stress] are written to probes.csv for every cycle, as "
+      "'x, y; x, y' (3D: 'x, y, z; ...'): one row per cycle and point, with "
+      "the columns cycle, probe (the point's number in this list, from 1), "
+      "x, y, (z), u_x, u_y, (u_z), sigma_xx, sigma_yy, sigma_zz, sigma_xy, "
+      "(sigma_xz, sigma_yz) and von_mises (in 2D sigma_zz is plane strain's "
+      "lambda tr(eps), and von_mises includes it). Each must lie in the body, "
+      "its boundary included: a point outside the mesh by at most the "
+      "distance of the nearest boundary face from the curved boundary at the "
+      "face's middle, plus 1e-6 of the face's size, counts as on the "
+      "boundary and is evaluated at the nearest point of the mesh; a point "
+      "farther outside is an input error, found on the first mesh. Empty: no "
+      "probes.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory    = prm.get("Directory");
+    write_vtu    = prm.get_bool("Write vtu");
+    print_timing = prm.get_bool("Print timing");
+    verbosity    = verbosity_names().value(prm.get("Verbosity"));
+    probe_points.clear();
+    for (const std::string &point :
+         Utilities::split_string_list(prm.get("Probe points"), ';'))
+      if (!point.empty())
+        probe_points.push_back(parse_doubles(point));
+    prm.leave_subsection();
+    if (directory.empty())
+      throw InputError("The entry <Output/Directory> must not be empty.",
+                       exit_invalid_value);
+  }
+
+  void
+  OutputParameters::check(const Parameters &parameters) const
+  {
+    const unsigned int dim = parameters.geometry.dimension;
+    for (unsigned int i = 0; i < probe_points.size(); ++i)
+      if (probe_points[i].size() != dim)
+        throw InputError("The point " + std::to_string(i + 1) +
+                           " of <Output/Probe points> has " +
+                           std::to_string(probe_points[i].size()) +
+                           " coordinates, not " + std::to_string(dim) +
+                           " (one per dimension).",
+                         exit_inconsistent);
+  }
+} // namespace dualcontact

@@ -1,0 +1,236 @@
+// <Solver>: CG + AMG for the linear systems, the Uzawa iteration and, inside
+// each of its steps, the Newton iteration.
+#include <deal.II/base/utilities.h>
+
+#include <dualcontact/friction_law.h>
+#include <dualcontact/input_error.h>
+#include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Linear solver tolerance",
+                      "1e-10",
+                      Patterns::Double(1e-16, 1.),
+                      "Relative tolerance of CG: stop when |residual| <= tol "
+                      "|right-hand side| [-].");
+    prm.declare_entry("Maximum linear iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Maximum number of CG iterations per linear solve [-].");
+    prm.declare_entry(
+      "AMG with rotation modes",
+      "true",
+      Patterns::Bool(),
+      "Give the algebraic multigrid all rigid-body modes (translations and "
+      "rotations) as near-null space; false gives it the translations only.");
+
+    prm.declare_entry(
+      "Augmentation parameter",
+      "10",
+      Patterns::Double(1e-3, 1e12),
+      "r_rel [-], > 0: the augmentation parameter of the modified Lagrangian "
+      "is r = r_rel (lambda + 2 mu) / h_C [stress/length], with h_C the "
+      "smallest face diameter on the contact boundary and lambda + 2 mu the "
+      "P-wave modulus (E (1 - nu) / ((1 + nu) (1 - 2 nu)); 1.35 E at nu = "
+      "0.3), which follows the stiffness of nearly incompressible materials. "
+      "Any r > 0 converges; larger r means fewer Uzawa steps and harder "
+      "Newton problems (more Newton steps where many nodes slip), smaller r "
+      "more Uzawa steps (below 0.1, more than the default <Solver/Maximum "
+      "Uzawa steps>). From 1e-3 to 1e12: below, the contact terms vanish "
+      "beside the proximal term and the body drifts for thousands of "
+      "steps.");
+    prm.declare_entry(
+      "Tangential augmentation parameter",
+      "auto",
+      Patterns::Anything(),
+      "r_t,rel [-]: 'auto' or a number > 0. The friction terms use their own "
+      "augmentation r_t = r_t,rel (lambda + 2 mu) / h_C [stress/length] (as "
+      "r, with r_t,rel for r_rel), in the update l2 <- proj_g(l2 + r_t v_t) "
+      "and in the Newton terms of l2. 'auto' is r_rel in 2D and r_rel / 4 in "
+      "3D: in 3D, friction terms as large as the normal ones make the "
+      "Newton matrices hard for CG and need 3-4 Newton steps per Uzawa "
+      "step (the projection onto the friction disc), and r_rel / 4 halves "
+      "the Coulomb solves; in 2D (an interval, no disc) a smaller r_t only "
+      "costs Uzawa steps (doc/theory.md §5). Ignored without friction.");
+    prm.declare_entry(
+      "Proximal parameter",
+      "1e-3",
+      Patterns::Double(0., 1e3),
+      "chi_rel [-], > 0: the proximal weight is chi = chi_rel E / L^2 "
+      "[stress/length^2], with L the body's size (longest side, or radius). "
+      "It makes each Uzawa step strongly convex, also when only contact "
+      "holds the body. At most 1e3: a proximal term that outweighs the "
+      "stiffness of coarse meshes (chi_rel 1e6 on 8 x 4 cells) holds v "
+      "where it is, and the Newton and Uzawa iterations stall; from 1 on "
+      "the Uzawa steps already stop before the solution is reached to the "
+      "tolerance (doc/robustness.md).");
+    prm.declare_entry(
+      "Uzawa tolerance",
+      "1e-8",
+      Patterns::Double(1e-15, 1.),
+      "The Uzawa iteration stops when the relative changes of l1 and of v "
+      "and the relative constraint violation are all below "
+      "this [-].");
+    prm.declare_entry(
+      "Maximum Uzawa steps",
+      "500",
+      Patterns::Integer(1),
+      "The Uzawa iteration gives up (with an error) after this many steps "
+      "[-].");
+    prm.declare_entry(
+      "Newton tolerance factor",
+      "1e-2",
+      Patterns::Double(1e-8, 1.),
+      "The Newton iteration's final tolerance on the relative gradient is this factor "
+      "times the Uzawa tolerance [-] (at most 0.01 is advised).");
+    prm.declare_entry(
+      "Initial inner tolerance",
+      "1e-2",
+      Patterns::Double(0., 1.),
+      "The Newton iteration's relative gradient tolerance in the first Uzawa step [-]; it "
+      "shrinks geometrically from step to step (summable errors, as the "
+      "convergence theorem needs) down to the final tolerance.");
+    prm.declare_entry(
+      "Inner tolerance reduction",
+      "0.5",
+      Patterns::Double(0., 1.),
+      "The Newton iteration's tolerance stays below initial tolerance times "
+      "this factor to the power (Uzawa step - 1) [-], in "
+      "(0, 1): a geometric envelope that keeps the errors "
+      "summable.");
+    prm.declare_entry(
+      "Inner tolerance factor",
+      "1e-2",
+      Patterns::Double(0., 1.),
+      "The Newton iteration stops once its gradient fell by this factor "
+      "within the Uzawa step (and is below the envelope), or "
+      "is below the final tolerance [-]: no Uzawa step is "
+      "solved much more accurately than the iteration can "
+      "use.");
+    prm.declare_entry(
+      "Maximum Newton steps",
+      "50",
+      Patterns::Integer(1),
+      "The Newton iteration gives up (with an error) after this many steps "
+      "in one Uzawa step [-], unless the line search is cutting its steps "
+      "short at changes of the node statuses (gross slip with a large r): "
+      "then it goes on, at most one more step per contact node.");
+    prm.declare_entry(
+      "Line search",
+      "true",
+      Patterns::Bool(),
+      "Exact line search on the Uzawa step's functional (a convex "
+      "piecewise quadratic along each Newton direction); makes "
+      "Newton globally convergent. false: full steps.");
+    prm.declare_entry(
+      "AMG rebuild fraction",
+      "0.05",
+      Patterns::Double(0., 1.),
+      "Rebuild the AMG preconditioner of the Newton matrix only when the "
+      "number of contact nodes that changed status since it was built "
+      "exceeds this fraction of the active set [-], or when the last CG "
+      "solve needed more than 1.5 times (plus 10) the iterations of the "
+      "first one after the set-up; 0 rebuilds it at every Newton step.");
+    prm.declare_entry(
+      "Time a reference linear solve",
+      "false",
+      Patterns::Bool(),
+      "After each contact solve, also time one linear elasticity solve on "
+      "the same mesh (AMG set-up and CG to the linear tolerance on the final "
+      "Newton matrix, i.e. with the contact nodes held) and report the ratio "
+      "of the times (assembly included in both). For benchmarks.");
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    linear_tolerance      = prm.get_double("Linear solver tolerance");
+    max_linear_iterations = prm.get_integer("Maximum linear iterations");
+    amg_rotation_modes    = prm.get_bool("AMG with rotation modes");
+    augmentation          = prm.get_double("Augmentation parameter");
+    {
+      const std::string value =
+        Utilities::trim(prm.get("Tangential augmentation parameter"));
+      char *end               = nullptr;
+      tangential_augmentation = std::strtod(value.c_str(), &end);
+      const bool number       = !value.empty() && *end == '\0' &&
+                          std::isfinite(tangential_augmentation) &&
+                          tangential_augmentation > 0.;
+      if (value == "auto")
+        tangential_augmentation = 0.; // resolved per dimension
+      else if (!number)
+        throw InputError("The entry <Solver/Tangential augmentation "
+                         "parameter> must be 'auto' or a positive number, "
+                         "not '" +
+                           value + "'.",
+                         exit_invalid_value);
+    }
+    proximal                  = prm.get_double("Proximal parameter");
+    uzawa_tolerance           = prm.get_double("Uzawa tolerance");
+    max_uzawa_steps           = prm.get_integer("Maximum Uzawa steps");
+    newton_tolerance_factor   = prm.get_double("Newton tolerance factor");
+    initial_inner_tolerance   = prm.get_double("Initial inner tolerance");
+    inner_tolerance_reduction = prm.get_double("Inner tolerance reduction");
+    inner_tolerance_factor    = prm.get_double("Inner tolerance factor");
+    max_newton_steps          = prm.get_integer("Maximum Newton steps");
+    line_search               = prm.get_bool("Line search");
+    amg_rebuild_fraction      = prm.get_double("AMG rebuild fraction");
+    time_reference_solve      = prm.get_bool("Time a reference linear solve");
+    prm.leave_subsection();
+    if (!(augmentation > 0.))
+      throw InputError("The entry <Solver/Augmentation parameter> must be "
+                       "positive.",
+                       exit_invalid_value);
+    if (!(proximal > 0.))
+      throw InputError("The entry <Solver/Proximal parameter> must be "
+                       "positive (chi = 0 leaves semi-coercive scenes "
+                       "singular).",
+                       exit_invalid_value);
+    if (!(inner_tolerance_reduction > 0. && inner_tolerance_reduction < 1.))
+      throw InputError("The entry <Solver/Inner tolerance reduction> must lie "
+                       "in (0, 1).",
+                       exit_invalid_value);
+  }
+
+  std::vector<IneffectiveRule>
+  SolverParameters::ineffective_rules(const Parameters &parameters) const
+  {
+    const bool contact =
+      !parameters.boundary.ids_with(BoundaryCondition::contact).empty();
+    const std::string &law = parameters.friction.law;
+    return {{contact && create_friction_law(law)->parameter_entry().empty(),
+             "Solver",
+             {"Tangential augmentation parameter"},
+             "<Friction/Law> is " + quoted(law) +
+               " (frictionless): there are no friction terms"},
+            {!contact,
+             "Solver",
+             {"Augmentation parameter",
+              "Tangential augmentation parameter",
+              "Proximal parameter",
+              "Uzawa tolerance",
+              "Maximum Uzawa steps",
+              "Newton tolerance factor",
+              "Initial inner tolerance",
+              "Inner tolerance reduction",
+              "Inner tolerance factor",
+              "Maximum Newton steps",
+              "Line search",
+              "AMG rebuild fraction",
+              "Time a reference linear solve"},
+             "the scene has no contact boundary (one linear elasticity solve "
+             "per mesh, no Uzawa or Newton iteration)"}};
+  }
+} // namespace dualcontact
