@@ -1,4 +1,4 @@
-// step-5: the body of tutorials/step-5, drawn for Gmsh.
+// step-6: the body of tutorials/step-6, drawn for Gmsh.
 //
 // An elastic half disc of radius L = 10 below the line y = 0: a piece of a
 // half-plane, large against the contact zone (a is about 0.1). The flat top
@@ -11,7 +11,7 @@
 //
 //   gmsh -2 -format msh41 half_space.geo -o half_space.msh
 //
-// (Debian: apt-get install gmsh; Gmsh is not needed to run step-5).
+// (Debian: apt-get install gmsh; Gmsh is not needed to run step-6).
 
 L = 10;   // radius of the body
 c = 1;    // half-width of the rectangle under the contact
