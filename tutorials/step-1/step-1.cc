@@ -42,19 +42,14 @@
 #include <string>
 #include <vector>
 
+#include "../common/tutorial_tools.h"
+
 namespace Step1
 {
   using namespace dealii;
   using namespace dualcontact;
 
-  // A number in printf format, for aligned screen lines.
-  std::string
-  format(const char *pattern, const double x)
-  {
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), pattern, x);
-    return buffer;
-  }
+  using tutorial::format;
 
   // @sect3{The Hertz solution}
   //
@@ -67,30 +62,9 @@ namespace Step1
   // elastic half-space with a parabolic gap, so for our half disc it holds
   // up to terms of order (a/R)^2. The program computes a and p0 from the
   // scene's own data, and P from the load vector.
-  struct Hertz
-  {
-    double P, E_star, a, p0;
-
-    double
-    pressure(const double x) const
-    {
-      return p0 * std::sqrt(std::max(0., 1. - x * x / (a * a)));
-    }
-  };
-
-  Hertz
-  hertz_solution(const Parameters &parameters, const double P)
-  {
-    const double E  = parameters.material.youngs_modulus;
-    const double nu = parameters.material.poissons_ratio;
-    const double R  = parameters.geometry.radius;
-    Hertz        h;
-    h.P      = P;
-    h.E_star = E / (1. - nu * nu);
-    h.a      = std::sqrt(4. * P * R / (numbers::PI * h.E_star));
-    h.p0     = 2. * P / (numbers::PI * h.a);
-    return h;
-  }
+  // tutorial::Hertz (tutorials/common/tutorial_tools.h) computes these, with
+  // R the half disc's radius.
+  using tutorial::Hertz;
 
   // @sect3{The contact pressure of all ranks}
   //
@@ -407,7 +381,7 @@ namespace Step1
   // 3. the r study;
   // 4. the checks.
   template <int dim>
-  void
+  tutorial::Checks
   run(const Parameters &parameters)
   {
     const MPI_Comm     comm = MPI_COMM_WORLD;
@@ -426,7 +400,7 @@ namespace Step1
     // symmetry and measures the whole zone, mirrored across x = 0.
     const double symmetry =
       parameters.geometry.type == GeometryType::quarter_disc ? 2. : 1.;
-    const Hertz hertz    = hertz_solution(parameters, symmetry * main.load);
+    const Hertz hertz(parameters, symmetry * main.load);
     const auto  relative = [](const double x, const double exact) {
       return format("%+.2e", x / exact - 1.);
     };
@@ -535,14 +509,9 @@ namespace Step1
     //
     // The program ends by testing what the text claims, with bounds taken
     // from measured values with a margin (the README lists them with their
-    // reasons). A failed check is named, and the program exits with status
-    // 1.
-    std::vector<std::string> failed;
-    const auto check = [&](const bool ok, const std::string &what) {
-      pcout << (ok ? "   passed: " : "   FAILED: ") << what << "\n";
-      if (!ok)
-        failed.push_back(what);
-    };
+    // reasons). Each prints a line; main() ends with one message naming the
+    // failed ones and exit status 1.
+    tutorial::Checks check;
     pcout << "\nChecks:\n";
 
     // (1) Equilibrium. After step 1, K v - b - chi M v^k + sum_s m_s l1_s n
@@ -597,56 +566,32 @@ namespace Step1
     check(monotone,
           "Uzawa steps do not increase as r_rel grows (" + steps + ")");
 
-    if (!failed.empty())
-      throw std::runtime_error("failed check: " + failed.front());
     pcout << "Output written to " << directory << "\n";
+    return check;
   }
 } // namespace Step1
 
 // @sect3{The main function}
 //
-// As in the library's main.cc: MPI, the parameter file (default
-// step-1.prm), and one clear message with a non-zero exit status if
-// anything goes wrong.
+// MPI, the parameter file (default step-1.prm) and `--set` overrides after
+// it, as the dualcontact program takes them; one message and a non-zero
+// exit status if anything goes wrong (tutorials/common/tutorial_tools.h).
+// The step compares with plane-strain Hertz without friction, so it
+// refuses a scene that is not one.
 int
 main(int argc, char *argv[])
 {
-  using namespace dealii;
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  try
-    {
-      dualcontact::Parameters parameters;
-      parameters.read_file(argc > 1 ? argv[1] : "step-1.prm");
-      AssertThrow(parameters.geometry.dimension == 2,
-                  ExcMessage("step-1 compares with plane-strain Hertz: "
-                             "<Geometry/Dimension> must be 2."));
-      AssertThrow(parameters.friction.law == "none",
-                  ExcMessage("step-1 is frictionless: <Friction/Law> must "
-                             "be none."));
-      Step1::run<2>(parameters);
-    }
-  catch (const dualcontact::InputError &error)
-    {
-      if (root)
-        std::cerr << "step-1: " << error.what() << std::endl;
-      return error.code;
-    }
-  catch (const ExceptionBase &exc)
-    {
-      if (root)
-        {
-          std::cerr << "step-1: error: ";
-          exc.print_info(std::cerr);
-          std::cerr << std::endl;
-        }
-      return 1;
-    }
-  catch (const std::exception &exc)
-    {
-      if (root)
-        std::cerr << "step-1: error: " << exc.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  using namespace dualcontact;
+  return tutorial::run_tutorial(
+    argc, argv, "step-1", "step-1.prm", [](Parameters &parameters) {
+      if (parameters.geometry.dimension != 2)
+        throw InputError("step-1 compares with plane-strain Hertz: "
+                         "<Geometry/Dimension> must be 2.",
+                         exit_inconsistent);
+      if (parameters.friction.law != "none")
+        throw InputError("step-1 is frictionless: <Friction/Law> must be "
+                         "none.",
+                         exit_inconsistent);
+      return Step1::run<2>(parameters);
+    });
 }

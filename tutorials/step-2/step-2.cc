@@ -47,19 +47,14 @@
 #include <string>
 #include <vector>
 
+#include "../common/tutorial_tools.h"
+
 namespace Step2
 {
   using namespace dealii;
   using namespace dualcontact;
 
-  // A number in printf format, for aligned screen lines.
-  std::string
-  format(const char *pattern, const double x)
-  {
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), pattern, x);
-    return buffer;
-  }
+  using tutorial::format;
 
   // The agreement asked of the two Newton iterations (relative): gradient
   // norms against the force scale, step lengths, iterates against |v|.
@@ -525,7 +520,7 @@ namespace Step2
   // k = 1 from v = 0 with l1 = 0, the multiplier update of step-1, and
   // proximal step k = 2 from there; then the checks.
   template <int dim>
-  void
+  tutorial::Checks
   run(const Parameters &parameters)
   {
     const MPI_Comm     comm = MPI_COMM_WORLD;
@@ -618,8 +613,8 @@ namespace Step2
     // The two iterations do the same arithmetic in the same order except
     // the line search (a different algorithm for the same root), so every
     // figure must agree to round-off: `agreement` = 1e-10 relative, with
-    // room for the line search's last digits. A failed check is named, and
-    // the program exits with status 1.
+    // room for the line search's last digits. Each check prints a line;
+    // main() ends with one message naming the failed ones and exit status 1.
     Agreement worst;
     for (const Agreement &a : agreements)
       {
@@ -630,12 +625,7 @@ namespace Step2
         worst.iterate     = std::max(worst.iterate, a.iterate);
         worst.final_v     = std::max(worst.final_v, a.final_v);
       }
-    std::vector<std::string> failed;
-    const auto check = [&](const bool ok, const std::string &what) {
-      pcout << (ok ? "   passed: " : "   FAILED: ") << what << "\n";
-      if (!ok)
-        failed.push_back(what);
-    };
+    tutorial::Checks check;
     pcout << "\nChecks:\n";
     check(worst.same_steps && worst.same_active,
           "the same Newton steps and active counts at every iterate");
@@ -649,56 +639,30 @@ namespace Step2
           "every iterate v agrees to 1e-10 (relative; largest " +
             format("%.1e", worst.iterate) + ", final v " +
             format("%.1e", worst.final_v) + ")");
-    if (!failed.empty())
-      throw std::runtime_error(
-        "the hand-written Newton iteration and the library's disagree: " +
-        failed.front());
+    return check;
   }
 } // namespace Step2
 
 // @sect3{The main function}
 //
-// As in step-1: MPI, the parameter file (default step-2.prm), and one clear
-// message with a non-zero exit status if anything goes wrong.
+// As in step-1: MPI, the parameter file (default step-2.prm) and `--set`
+// overrides after it; one message and a non-zero exit status if anything
+// goes wrong (tutorials/common/tutorial_tools.h). The hand-written Newton
+// step is for the frictionless 2D scene.
 int
 main(int argc, char *argv[])
 {
-  using namespace dealii;
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  try
-    {
-      dualcontact::Parameters parameters;
-      parameters.read_file(argc > 1 ? argv[1] : "step-2.prm");
-      AssertThrow(parameters.geometry.dimension == 2,
-                  ExcMessage("step-2 runs the 2D half disc: "
-                             "<Geometry/Dimension> must be 2."));
-      AssertThrow(parameters.friction.law == "none",
-                  ExcMessage("step-2 is frictionless: <Friction/Law> must "
-                             "be none."));
-      Step2::run<2>(parameters);
-    }
-  catch (const dualcontact::InputError &error)
-    {
-      if (root)
-        std::cerr << "step-2: " << error.what() << std::endl;
-      return error.code;
-    }
-  catch (const ExceptionBase &exc)
-    {
-      if (root)
-        {
-          std::cerr << "step-2: error: ";
-          exc.print_info(std::cerr);
-          std::cerr << std::endl;
-        }
-      return 1;
-    }
-  catch (const std::exception &exc)
-    {
-      if (root)
-        std::cerr << "step-2: error: " << exc.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  using namespace dualcontact;
+  return tutorial::run_tutorial(
+    argc, argv, "step-2", "step-2.prm", [](Parameters &parameters) {
+      if (parameters.geometry.dimension != 2)
+        throw InputError("step-2 runs the 2D half disc: "
+                         "<Geometry/Dimension> must be 2.",
+                         exit_inconsistent);
+      if (parameters.friction.law != "none")
+        throw InputError("step-2 is frictionless: <Friction/Law> must be "
+                         "none.",
+                         exit_inconsistent);
+      return Step2::run<2>(parameters);
+    });
 }

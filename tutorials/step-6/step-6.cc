@@ -41,29 +41,15 @@
 #include <string>
 #include <vector>
 
-namespace Step4
+#include "../common/tutorial_tools.h"
+
+namespace Step6
 {
   using namespace dealii;
   using namespace dualcontact;
 
-  // A number in printf format, for aligned screen lines.
-  std::string
-  format(const char *pattern, const double x)
-  {
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), pattern, x);
-    return buffer;
-  }
-
-  // The checks: what the step claims, checked on its own figures (README.md
-  // gives each bound with its reason). All ranks hold the same figures, so
-  // all throw together if one fails, and main() reports it.
-  void
-  check(ConditionalOStream &pcout, const bool ok, const std::string &what)
-  {
-    pcout << (ok ? "  passed: " : "  FAILED: ") << what << "\n";
-    AssertThrow(ok, ExcMessage("step-6: check failed: " + what));
-  }
+  using tutorial::format;
+  using tutorial::Hertz;
 
   // @sect3{The mesh, before anything is solved}
   //
@@ -182,40 +168,8 @@ namespace Step4
   // and the largest shear stress in the plane, tau = (sigma_xx - sigma_yy)/2,
   // peaks at 0.300 p0 at z = 0.786 a, below the surface: where yielding
   // starts in a ductile material, and what a probe is for.
-  struct Hertz
-  {
-    double P, a, p0;
-
-    Hertz(const Parameters &parameters, const double P)
-        : P(P)
-    {
-      const double nu     = parameters.material.poissons_ratio;
-      const double E_star = parameters.material.youngs_modulus / (1 - nu * nu);
-      const double R =
-        std::stod(parameters.obstacle.values.at("Obstacle/Radius"));
-      a  = std::sqrt(4. * P * R / (numbers::PI * E_star));
-      p0 = 2. * P / (numbers::PI * a);
-    }
-
-    double
-    pressure(const double x) const
-    {
-      return p0 * std::sqrt(std::max(0., 1. - x * x / (a * a)));
-    }
-
-    double
-    sigma_yy(const double z) const
-    {
-      return -p0 * a / std::sqrt(a * a + z * z);
-    }
-
-    double
-    sigma_xx(const double z) const
-    {
-      const double s = std::sqrt(a * a + z * z);
-      return -p0 * ((a * a + 2. * z * z) / (a * s) - 2. * z / a);
-    }
-  };
+  // tutorial::Hertz (tutorials/common/tutorial_tools.h) has these formulas,
+  // with R the obstacle's radius and the material of the scene.
 
   // The force on the obstacle: the contact force on the body, reversed
   // (cycles.csv: obstacle_force_x, obstacle_force_y). Its y component is P.
@@ -242,33 +196,14 @@ namespace Step4
   std::vector<ContactRow>
   read_contact_csv(const std::string &filename)
   {
-    std::ifstream in(filename);
-    AssertThrow(in, ExcMessage("step-6: cannot read " + filename));
-    const auto split = [](const std::string &line) {
-      std::vector<std::string> cells;
-      std::stringstream        s(line);
-      for (std::string cell; std::getline(s, cell, ',');)
-        cells.push_back(cell);
-      return cells;
-    };
-    std::string line;
-    std::getline(in, line);
-    std::map<std::string, unsigned int> column;
-    for (const std::string &name : split(line))
-      column.emplace(name, column.size());
-    for (const std::string name : {"s", "x", "weight", "l1", "status"})
-      AssertThrow(column.count(name),
-                  ExcMessage("step-6: no column " + name + " in " + filename));
-    std::vector<ContactRow> rows;
-    while (std::getline(in, line))
-      {
-        const std::vector<std::string> c = split(line);
-        rows.push_back({std::stod(c[column["s"]]),
-                        std::stod(c[column["x"]]),
-                        std::stod(c[column["weight"]]),
-                        std::stod(c[column["l1"]]),
-                        c[column["status"]]});
-      }
+    const tutorial::CsvTable table(filename);
+    std::vector<ContactRow>  rows;
+    for (unsigned int i = 0; i < table.n_rows(); ++i)
+      rows.push_back({table.number(i, "s"),
+                      table.number(i, "x"),
+                      table.number(i, "weight"),
+                      table.number(i, "l1"),
+                      table.text(i, "status")});
     return rows;
   }
 
@@ -401,7 +336,7 @@ namespace Step4
   // postprocessing and output, as in steps 1-5. Its screen output goes to
   // screen.log in the output folder; the screen shows this program's
   // tables. Then the comparisons, and the checks.
-  void
+  tutorial::Checks
   run(const Parameters &parameters)
   {
     const MPI_Comm     comm = MPI_COMM_WORLD;
@@ -486,6 +421,7 @@ namespace Step4
 
     // @sect4{The checks}
     pcout << "\nChecks:\n";
+    tutorial::Checks checks;
 
     // 1. The manifold: with it the curved part's length converges to the
     // arc's (the error of a polygon of n chords falls as 1/n^2, by about 4
@@ -493,45 +429,41 @@ namespace Step4
     if (arc.empty())
       pcout << "  skipped: the arc (no circle in <Geometry/Manifolds>)\n";
     else
-      check(pcout,
-            std::abs(arc.back().with_manifold / arc.back().exact - 1.) < 1e-4 &&
-              std::abs(arc.back().without_manifold -
-                       arc.front().without_manifold) < 1e-12 * arc.back().exact,
-            "the arc: within 1e-4 of its length with the manifold, the "
-            "coarse polygon without");
+      checks(
+        std::abs(arc.back().with_manifold / arc.back().exact - 1.) < 1e-4 &&
+          std::abs(arc.back().without_manifold - arc.front().without_manifold) <
+            1e-12 * arc.back().exact,
+        "the arc: within 1e-4 of its length with the manifold, the "
+        "coarse polygon without");
 
     // 2. Equilibrium: the force on the obstacle is the reaction of the
     // fixed arc (id 3), the only other support: nothing else loads the body.
     const double arc_reaction = last.reactions.on_id.at(3)[1];
-    check(pcout,
-          std::abs(arc_reaction - hertz.P) <= 1e-8 * hertz.P &&
-            std::abs(obstacle_force_y(last)) > 0.,
-          "the force on the obstacle equals the reaction of the fixed arc to "
-          "1e-8");
+    checks(std::abs(arc_reaction - hertz.P) <= 1e-8 * hertz.P &&
+             std::abs(obstacle_force_y(last)) > 0.,
+           "the force on the obstacle equals the reaction of the fixed arc to "
+           "1e-8");
 
     // 3. Hertz: on the last mesh a and p0 within 1 % of Hertz's for the
     // measured force, and the pressure profile within 1 % (relative L2).
-    check(pcout,
-          std::abs(last.zone.edge_half_width / hertz.a - 1.) < 0.01,
-          "a within 1 % of Hertz's for the measured force");
-    check(pcout,
-          std::abs(last.zone.max_pressure / hertz.p0 - 1.) < 0.01,
-          "p0 within 1 % of Hertz's for the measured force");
-    check(pcout,
-          pressure.l2_error < 0.01 && pressure.ordered,
-          "contact_NN.csv: ordered along Gamma_C, and its pressure within "
-          "1 % of Hertz's (relative L2)");
+    checks(std::abs(last.zone.edge_half_width / hertz.a - 1.) < 0.01,
+           "a within 1 % of Hertz's for the measured force");
+    checks(std::abs(last.zone.max_pressure / hertz.p0 - 1.) < 0.01,
+           "p0 within 1 % of Hertz's for the measured force");
+    checks(pressure.l2_error < 0.01 && pressure.ordered,
+           "contact_NN.csv: ordered along Gamma_C, and its pressure within "
+           "1 % of Hertz's (relative L2)");
 
     // 4. The probes: every stress within 3 % of p0 of McEwen's, and the
     // largest shear of the probes within 2 % of McEwen's at the same
     // depths.
-    check(pcout,
-          probes.worst < 0.03 &&
-            std::abs(probes.tau_max / probes.tau_peak - 1.) < 0.02,
-          "the probes: McEwen's stresses within 0.03 p0, the largest shear "
-          "within 2 %");
+    checks(probes.worst < 0.03 &&
+             std::abs(probes.tau_max / probes.tau_peak - 1.) < 0.02,
+           "the probes: McEwen's stresses within 0.03 p0, the largest shear "
+           "within 2 %");
+    return checks;
   }
-} // namespace Step4
+} // namespace Step6
 
 // @sect3{The main function}
 //
@@ -542,26 +474,6 @@ namespace Step4
 int
 main(int argc, char *argv[])
 {
-  using namespace dealii;
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  try
-    {
-      std::string              file = "step-6.prm";
-      std::vector<std::string> overrides;
-      for (int i = 1; i < argc; ++i)
-        if (std::string(argv[i]) == "--set" && i + 1 < argc)
-          overrides.emplace_back(argv[++i]);
-        else
-          file = argv[i];
-      dualcontact::Parameters parameters;
-      parameters.read_file(file, overrides);
-      Step4::run(parameters);
-    }
-  catch (const std::exception &exc)
-    {
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cerr << "step-6: error: " << exc.what() << std::endl;
-      return 1;
-    }
-  return 0;
+  return dualcontact::tutorial::run_tutorial(
+    argc, argv, "step-6", "step-6.prm", Step6::run);
 }
