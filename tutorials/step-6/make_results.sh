@@ -4,10 +4,10 @@
 # pressure.svg and stress_axis.svg with gnuplot, and write the quoted output
 # of README.md anew (../readme_output.sh).
 # Run from anywhere; the program is ../../build/tutorials/step-6 unless
-# STEP5=<path> says otherwise.
+# STEP6=<path> says otherwise.
 set -euo pipefail
 cd "$(dirname "$0")"
-program=${STEP5:-../../build/tutorials/step-6}
+program=${STEP6:-../../build/tutorials/step-6}
 # Open MPI refuses to run as root unless told
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
