@@ -135,6 +135,7 @@ namespace dualcontact
     tangent  = tangents[0];
 
     l1.assign(nodes.size(), 0.);
+    statuses.assign(nodes.size(), separated);
 
     // Friction data at the nodes: the law's parameter (F or g), never
     // negative, and the threshold it gives at zero pressure.

@@ -17,18 +17,21 @@ namespace dualcontact
 {
   namespace
   {
-    // Status of a contact node as the generalised Hessian sees it:
-    // 0 separated, 1 in contact and sticking (or frictionless), 2 slipping.
+    // The branch of the generalised Hessian at a contact node: the normal
+    // term where z >= 0 (at z = 0, a node that touches with no force, the
+    // active branch, so that the step sees it), and the friction term of
+    // a sticking or a slipping node (sticks(), as the multiplier update
+    // decides it).
     template <int n>
-    unsigned char
-    node_status(const double        z,
-                const bool          friction,
-                const Tensor<1, n> &y,
-                const double        g)
+    NodeStatus
+    hessian_branch(const double        z,
+                   const bool          friction,
+                   const Tensor<1, n> &y,
+                   const double        g)
     {
       if (z < 0.)
-        return 0;
-      return (!friction || y.norm() < g) ? 1 : 2;
+        return separated;
+      return (!friction || sticks(y, g)) ? stick : slip;
     }
 
     // seconds since `start` on this rank's clock, and restart it
@@ -211,11 +214,11 @@ namespace dualcontact
       for (unsigned int s = 0; s < status.size(); ++s)
         {
           n_changed += (status[s] != amg_status[s]);
-          n_active_built += (amg_status[s] > 0);
+          n_active_built += (amg_status[s] != separated);
           // a node whose contact terms grew: newly in contact, or from
           // slip to stick (the full r_t instead of its projection)
-          n_stiffer += (amg_status[s] == 0 && status[s] > 0) ||
-                       (amg_status[s] == 2 && status[s] == 1);
+          n_stiffer += (amg_status[s] == separated && status[s] != separated) ||
+                       (amg_status[s] == slip && status[s] == stick);
         }
     n_changed      = Utilities::MPI::sum(n_changed, comm);
     n_active_built = Utilities::MPI::sum(n_active_built, comm);
@@ -227,7 +230,7 @@ namespace dualcontact
     // the same hierarchy (doc/performance.md).
     types::global_dof_index n_slipping = 0;
     for (const unsigned char s : status)
-      n_slipping += (s == 2);
+      n_slipping += (s == slip);
     const bool same_matrix =
       amg_valid && n_changed == 0 && Utilities::MPI::sum(n_slipping, comm) == 0;
     // ... or when more than 20 nodes got stiffer terms than the hierarchy
@@ -235,10 +238,7 @@ namespace dualcontact
     // stiffness) puts an outlying eigenvalue into the preconditioned
     // matrix, and CG spends about one iteration on each, so beyond about a
     // set-up's worth of iterations (~20) a new set-up is cheaper. Terms
-    // that shrank do not do that. Measured on the 3D ball with friction:
-    // CG with the old hierarchy stopped unconverged after 54 iterations at
-    // 6.8e5 DoFs, after 54 and 63 at 2.0e6, and needed 1, 4 and 8 after the
-    // set-up that followed (doc/performance.md).
+    // that shrank do not do that (doc/contact_solver.md).
     const bool rebuild =
       !amg_valid || parameters.amg_rebuild_fraction == 0. || n_stiffer > 20 ||
       n_changed >
@@ -421,9 +421,11 @@ namespace dualcontact
         types::global_dof_index n_active = 0;
         for (unsigned int s = 0; s < n_nodes; ++s)
           {
-            status[s] =
-              node_status(z[s], contact.friction, y[s], contact.threshold[s]);
-            n_active += (status[s] > 0);
+            status[s] = hessian_branch(z[s],
+                                       contact.friction,
+                                       y[s],
+                                       contact.threshold[s]);
+            n_active += (status[s] != separated);
           }
         record.n_active = Utilities::MPI::sum(n_active, comm);
 

@@ -195,12 +195,6 @@ namespace dualcontact
     return limit;
   }
 
-  double
-  available_memory(const MPI_Comm comm)
-  {
-    return memory_limit(comm).bytes;
-  }
-
   RunSizeCheck::RunSizeCheck(const Parameters &parameters, const MPI_Comm comm)
       : parameters(parameters)
       , comm(comm)

@@ -70,26 +70,29 @@ namespace dualcontact
         l1_max          = std::max(l1_max, l1_new);
         violation       = std::max(violation, positive_part(-gap));
         complementarity = std::max(complementarity, l1_new * std::abs(gap));
-        counts[0] += (l1_new > 0.);
-        contact.l1[s] = l1_new;
-        if (!contact.friction)
-          continue;
-        // merged threshold iteration: g from the new pressure first, so
-        // that |l2| <= g holds
-        if (update_threshold)
+        contact.l1[s]   = l1_new;
+        if (contact.friction)
           {
-            const double g_new = contact.threshold_from_pressure(s);
-            sums[4] += std::pow(g_new - contact.threshold[s], 2);
-            sums[5] += g_new * g_new;
-            contact.threshold[s] = g_new;
+            // merged threshold iteration: g from the new pressure first, so
+            // that |l2| <= g holds
+            if (update_threshold)
+              {
+                const double g_new = contact.threshold_from_pressure(s);
+                sums[4] += std::pow(g_new - contact.threshold[s], 2);
+                sums[5] += g_new * g_new;
+                contact.threshold[s] = g_new;
+              }
+            const Tensor<1, dim - 1> l2_new =
+              project_onto_disc(y[s], contact.threshold[s]);
+            sums[2] += (l2_new - contact.l2[s]).norm_square();
+            sums[3] += l2_new.norm_square();
+            contact.l2[s] = l2_new;
           }
-        const Tensor<1, dim - 1> l2_new =
-          project_onto_disc(y[s], contact.threshold[s]);
-        sums[2] += (l2_new - contact.l2[s]).norm_square();
-        sums[3] += l2_new.norm_square();
-        contact.l2[s] = l2_new;
-        if (l1_new > 0.)
-          ++counts[y[s].norm() < contact.threshold[s] ? 1 : 2];
+        contact.statuses[s] =
+          node_status(l1_new, y[s], contact.threshold[s], contact.friction);
+        counts[0] += (contact.statuses[s] != separated);
+        if (contact.friction && contact.statuses[s] != separated)
+          ++counts[contact.statuses[s]]; // stick 1, slip 2
       }
     Utilities::MPI::sum(ArrayView<const double>(sums, 6),
                         comm,

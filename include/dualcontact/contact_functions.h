@@ -49,6 +49,43 @@ namespace dualcontact
   }
 
   /**
+   * What a contact node does, as the multiplier update decides it
+   * (doc/theory.md §3.2), from the new pressure l1 = (z)^+ and the trial
+   * traction y = l2 + r_t v_t that the update projects onto the disc of
+   * radius g: separated where l1 = 0; in contact where l1 > 0, and then,
+   * with friction, sticking where y lies inside the disc (l2 = y, no slip)
+   * and slipping where it does not (l2 = g y/|y|). Without friction a node
+   * in contact counts as sticking. The values are those of the status
+   * column of the contact CSV (0, 1, 2).
+   */
+  enum NodeStatus : unsigned char
+  {
+    separated = 0,
+    stick     = 1,
+    slip      = 2
+  };
+
+  /** Whether the trial traction y lies inside the disc of radius g. */
+  template <int n>
+  bool
+  sticks(const Tensor<1, n> &y, const double g)
+  {
+    return y.norm() < g;
+  }
+
+  template <int n>
+  NodeStatus
+  node_status(const double        l1,
+              const Tensor<1, n> &y,
+              const double        g,
+              const bool          friction)
+  {
+    if (!(l1 > 0.))
+      return separated;
+    return (!friction || sticks(y, g)) ? stick : slip;
+  }
+
+  /**
    * psi_g(y) = |y|^2/2 for |y| <= g, g|y| - g^2/2 beyond: the C^1, convex,
    * Huber-like function whose gradient is project_onto_disc(y, g). The
    * friction part of the merit function of a Uzawa step is

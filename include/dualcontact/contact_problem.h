@@ -218,12 +218,6 @@ namespace dualcontact
       return elastic_solver;
     }
 
-    const Scene<dim> &
-    get_scene() const
-    {
-      return scene;
-    }
-
     Report<dim> &
     get_report()
     {

@@ -132,18 +132,13 @@ namespace dualcontact
     }
 
     /**
-     * Status of local node s at convergence: 0 separated (l1 = 0), 1 in
-     * contact and sticking (or in contact without friction), 2 slipping
-     * (|l2| = g).
+     * Status of local node s as the last multiplier update decided it
+     * (node_status(), contact_functions.h); separated before the first.
      */
-    unsigned int
+    NodeStatus
     status(const unsigned int s) const
     {
-      if (!(l1[s] > 0.))
-        return 0;
-      if (!friction || l2[s].norm() < (1. - 1e-9) * threshold[s])
-        return 1;
-      return 2;
+      return statuses[s];
     }
 
     /**
@@ -259,6 +254,9 @@ namespace dualcontact
     std::vector<Tensor<1, dim - 1>> l2;
     std::vector<double>             threshold;
     std::vector<double>             friction_parameter;
+
+    /** Each local node's status after the last multiplier update. */
+    std::vector<NodeStatus> statuses;
 
   private:
     types::global_dof_index n_global  = 0;

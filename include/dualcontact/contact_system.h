@@ -88,7 +88,7 @@ namespace dualcontact
     unsigned int            cg_iterations = 0;
     unsigned int            amg_setups    = 0;
     types::global_dof_index n_active      = 0;
-    double gradient        = 0.; // newton: |grad M_k| / |b| before the step
+    double gradient        = 0.; // newton: |grad M_k| / F_ref before the step
     double step_length     = 0.; // newton: alpha of the line search
     double change_l1       = 0.; // uzawa: |l1_new - l1| / |l1_new|
     double change_v        = 0.; // uzawa: |v_new - v| / |v_new|

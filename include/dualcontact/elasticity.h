@@ -140,12 +140,6 @@ namespace dualcontact
               const double                          tolerance,
               const unsigned int                    max_iterations) const;
 
-    bool
-    initialized() const
-    {
-      return preconditioner != nullptr;
-    }
-
   private:
     const SolverParameters                            &parameters;
     const double                                       poisson_ratio;

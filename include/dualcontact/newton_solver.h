@@ -49,9 +49,11 @@ namespace dualcontact
      *   + sum_s m_s/(2r) (((l1_s + r(v_n - g0))^+)^2 - l1_s^2)
      *   + sum_s m_s/r psi_g(l2_s + r v_t)
      * over v, from v, with v^k = `v_previous` and the multipliers of
-     * `contact`. Stops when |grad M_k| <= max(final_tolerance |b|,
-     * min(envelope |b|, inner factor |grad_0|)), grad_0 the gradient at the
-     * start, or at the round-off floor of the matrix. Every step is reported
+     * `contact`. Stops when |grad M_k| <= max(final_tolerance F_ref,
+     * min(envelope F_ref, inner factor |grad_0|)), grad_0 the gradient at
+     * the start and F_ref the force scale of doc/theory.md §6 (the smaller
+     * of the load and the contact forces), or at the round-off floor of the
+     * matrix. Every step is reported
      * to `observer` (may be nullptr). Throws if it does not converge.
      */
     NewtonStatistics
@@ -142,7 +144,7 @@ namespace dualcontact
     bool                       amg_valid                 = false;
     unsigned int               cg_iterations_after_setup = 0;
     unsigned int               last_cg_iterations        = 0;
-    // the round-off floor of the gradient found since reset(), over |b|,
+    // the round-off floor of the gradient found since reset(), over F_ref,
     // and whether it was reported
     double roundoff_floor    = 0.;
     bool   roundoff_reported = false;

@@ -440,13 +440,6 @@ namespace dualcontact
      */
     std::map<std::string, std::string> given;
 
-    /** Whether the input gave `entry` ("Subsection/Entry"). */
-    bool
-    is_given(const std::string &entry) const
-    {
-      return given.count(entry) > 0;
-    }
-
     /**
      * The parameters as read (file and overrides), in the form of
      * --print-parameters: every entry with its value, default and help

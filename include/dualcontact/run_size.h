@@ -68,10 +68,6 @@ namespace dualcontact
   MemoryLimit
   memory_limit(const MPI_Comm comm);
 
-  /** memory_limit(comm).bytes. */
-  double
-  available_memory(const MPI_Comm comm);
-
   /**
    * Refuses a run that would not fit: check() throws InputError
    * (exit_inconsistent) naming the entries that make the mesh large, the
