@@ -1,16 +1,89 @@
-// Entry declaration: the catalog holds what the reader asks for, and each
-// kind of pattern reads in words.
+// Entry declaration: every entry of the parameters, the registered plugins'
+// included, is declared through EntryDeclarer (so that ParameterReader can
+// say what it expects), and each kind of pattern reads in words.
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
 #include <dualcontact/entry_declaration.h>
+#include <dualcontact/parameters.h>
 
 #include <catch2/catch.hpp>
 
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 using namespace dualcontact;
 using dealii::ParameterHandler;
+
+namespace
+{
+  /**
+   * Every entry the handler holds, as "Subsection/Entry" -> value, read
+   * from its listing in the short .prm form ("subsection", "set", "end").
+   */
+  std::map<std::string, std::string>
+  handler_entries(const ParameterHandler &prm)
+  {
+    std::ostringstream listing;
+    prm.print_parameters(listing, ParameterHandler::ShortPRM);
+    std::istringstream                 in(listing.str());
+    std::vector<std::string>           path;
+    std::map<std::string, std::string> entries;
+    std::string                        line;
+    while (std::getline(in, line))
+      {
+        line = dealii::Utilities::trim(line);
+        if (line.rfind("subsection ", 0) == 0)
+          path.push_back(line.substr(11));
+        else if (line == "end")
+          path.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+          {
+            const std::size_t equals = line.find('=');
+            std::string       name;
+            for (const std::string &subsection : path)
+              name += subsection + "/";
+            name += dealii::Utilities::trim(line.substr(4, equals - 4));
+            entries[name] = dealii::Utilities::trim(line.substr(equals + 1));
+          }
+      }
+    return entries;
+  }
+} // namespace
+
+TEST_CASE("Every entry, the registered plugins' too, is declared through "
+          "EntryDeclarer, with its default and its pattern in words",
+          "[parameters]")
+{
+  ParameterHandler prm;
+  EntryDeclarer    declarer(prm);
+  Parameters::declare_parameters(declarer);
+
+  std::map<std::string, std::string> catalogued;
+  for (const auto &[key, entry] : declarer.catalog().entries())
+    {
+      std::string name;
+      for (const std::string &subsection : key.first)
+        name += subsection + "/";
+      name += key.second;
+      catalogued[name] = entry.default_value;
+      INFO(name << ": " << entry.words);
+      // words, not deal.II's pattern text ("[Double 0...1 (inclusive)]")
+      CHECK(!entry.words.empty());
+      CHECK(entry.words.find('[') == std::string::npos);
+    }
+
+  // an entry declared on the handler alone would be missing here
+  CHECK(handler_entries(prm) == catalogued);
+  CHECK(catalogued.size() > 60);
+  // the library's plugins and those this test program registers
+  CHECK(catalogued.count("Foundation/Normal") == 1);
+  CHECK(catalogued.count("Friction/Coefficient") == 1);
+  CHECK(catalogued.count("Refinement/Contact indicator weight") == 1);
+  CHECK(catalogued.count("Obstacle/Floor height") == 1);
+}
 
 TEST_CASE("The subsections and entries of the catalog, as the reader asks "
           "for them",
