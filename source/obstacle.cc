@@ -46,7 +46,7 @@ namespace dualcontact
   }
 
   void
-  declare_obstacle_parameters(ParameterHandler &prm)
+  declare_obstacle_parameters(EntryDeclarer &declarer)
   {
     std::string names, help;
     for (const std::string &name : obstacle_names())
@@ -54,26 +54,27 @@ namespace dualcontact
         names += (names.empty() ? "" : "|") + name;
         help += " '" + name + "': " + obstacle_kind(name).help;
       }
-    prm.enter_subsection("Obstacle");
-    prm.declare_entry("Type",
-                      "plane",
-                      Patterns::Selection(names),
-                      "The rigid obstacle on Gamma_C." + help +
-                        " Gap and normal are taken at each contact node's "
-                        "position before deformation (small displacements).");
-    prm.declare_entry("Displacement",
-                      "",
-                      Patterns::List(Patterns::Double(), 0, 3),
-                      "A rigid translation U of the obstacle, prescribed "
-                      "(e.g. an indentation depth: U = 0, -0.01 moves it "
-                      "down by 0.01) [length], one value per dimension; "
-                      "empty: it stays where it is. The force on the "
-                      "obstacle is reported.");
-    prm.leave_subsection();
+    declarer.enter_subsection("Obstacle");
+    declarer.declare_entry(
+      "Type",
+      "plane",
+      EntryPattern::selection(names),
+      "The rigid obstacle on Gamma_C." + help +
+        " Gap and normal are taken at each contact node's "
+        "position before deformation (small displacements).");
+    declarer.declare_entry("Displacement",
+                           "",
+                           EntryPattern::list(EntryPattern::number(), 0, 3),
+                           "A rigid translation U of the obstacle, prescribed "
+                           "(e.g. an indentation depth: U = 0, -0.01 moves it "
+                           "down by 0.01) [length], one value per dimension; "
+                           "empty: it stays where it is. The force on the "
+                           "obstacle is reported.");
+    declarer.leave_subsection();
 
     // each kind's entries, once per declaring function (kinds of one file
     // may share one)
-    std::vector<void (*)(ParameterHandler &)> declared;
+    std::vector<void (*)(EntryDeclarer &)> declared;
     for (const std::string &name : obstacle_names())
       {
         const auto declare = obstacle_kind(name).declare_parameters;
@@ -81,16 +82,16 @@ namespace dualcontact
             std::find(declared.begin(), declared.end(), declare) ==
               declared.end())
           {
-            declare(prm);
+            declare(declarer);
             declared.push_back(declare);
           }
       }
   }
 
   void
-  ObstacleParameters::declare_parameters(ParameterHandler &prm)
+  ObstacleParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    declare_obstacle_parameters(prm);
+    declare_obstacle_parameters(declarer);
   }
 
   void

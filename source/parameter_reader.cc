@@ -4,14 +4,12 @@
 #include <dualcontact/parameter_reader.h>
 
 #include <algorithm>
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
-#include <limits>
 #include <sstream>
+#include <utility>
 
 namespace dualcontact
 {
@@ -93,216 +91,6 @@ namespace dualcontact
       return source + ":" + std::to_string(line);
     }
 
-    // ParameterHandler's JSON output spells every character other than
-    // [a-zA-Z0-9] as _XX (its ASCII code in hexadecimal).
-    std::string
-    demangle(const std::string &name)
-    {
-      std::string result;
-      for (std::size_t i = 0; i < name.size(); ++i)
-        if (name[i] == '_' && i + 2 < name.size() &&
-            std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
-          {
-            result +=
-              static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-          }
-        else
-          result += name[i];
-      return result;
-    }
-
-    // ----------------------------------------------- patterns in words
-
-    struct Words
-    {
-      std::string singular; // "a number >= 0"
-      std::string plural;   // "numbers >= 0"
-    };
-
-    Words
-    words_of(const std::string &description);
-
-    // The index of the ']' that closes the '[' at `open`, or npos.
-    std::size_t
-    closing_bracket(const std::string &text, const std::size_t open)
-    {
-      int depth = 0;
-      for (std::size_t i = open; i < text.size(); ++i)
-        if (text[i] == '[')
-          ++depth;
-        else if (text[i] == ']' && --depth == 0)
-          return i;
-      return std::string::npos;
-    }
-
-    // "<[inner pattern]>" at `pos`: the inner description; `pos` moves past
-    // the '>'.
-    bool
-    read_inner(const std::string &text, std::size_t &pos, std::string &inner)
-    {
-      if (pos + 1 >= text.size() || text[pos] != '<' || text[pos + 1] != '[')
-        return false;
-      const std::size_t close = closing_bracket(text, pos + 1);
-      if (close == std::string::npos || close + 1 >= text.size() ||
-          text[close + 1] != '>')
-        return false;
-      inner = text.substr(pos + 1, close - pos);
-      pos   = close + 2;
-      return true;
-    }
-
-    // " of length 2...3 (inclusive)" -> "2 or 3 "; empty for any length
-    std::string
-    length_in_words(const std::string &text)
-    {
-      const auto dots = text.find("...");
-      if (dots == std::string::npos)
-        return "";
-      const std::string low = Utilities::trim(text.substr(0, dots));
-      const std::string high =
-        Utilities::trim(text.substr(dots + 3, text.find(' ', dots) - dots - 3));
-      const bool unbounded =
-        high == std::to_string(std::numeric_limits<unsigned int>::max());
-      if (unbounded)
-        return low == "0" ? "" : "at least " + low + " ";
-      if (low == high)
-        return low + " ";
-      if (std::stoul(high) == std::stoul(low) + 1)
-        return low + " or " + high + " ";
-      return low + " to " + high + " ";
-    }
-
-    std::string
-    separator_in_words(const std::string &separator)
-    {
-      if (separator == ",")
-        return "comma-separated";
-      if (separator == ";")
-        return "semicolon-separated";
-      return "'" + separator + "'-separated";
-    }
-
-    // "[List of <[Double ...]> of length 2...3 (inclusive)]", optionally
-    // with " separated by <;>" before the ']'
-    bool
-    list_in_words(const std::string &d, Words &words)
-    {
-      const std::string head = "[List of ";
-      std::size_t       pos  = head.size();
-      std::string       inner;
-      if (!starts_with(d, head) || !read_inner(d, pos, inner))
-        return false;
-      std::string rest      = d.substr(pos, d.size() - 1 - pos);
-      std::string separator = ",";
-      const auto  by        = rest.find(" separated by <");
-      if (by != std::string::npos)
-        {
-          separator = rest.substr(by + 15, rest.find('>', by) - by - 15);
-          rest      = rest.substr(0, by);
-        }
-      const std::string count =
-        length_in_words(rest.substr(rest.find("length") + 6));
-      const std::string list = separator_in_words(separator) + " list";
-      words.singular = "a " + list + " of " + count + words_of(inner).plural;
-      words.plural   = list + "s of " + count + words_of(inner).plural;
-      return true;
-    }
-
-    // "[Map of <[key]>:<[value]> of length ...]", optionally with
-    // " separated by <;>"
-    bool
-    map_in_words(const std::string &d, Words &words)
-    {
-      const std::string head = "[Map of ";
-      std::size_t       pos  = head.size();
-      std::string       key, value;
-      if (!starts_with(d, head) || !read_inner(d, pos, key))
-        return false;
-      const std::size_t value_start = d.find('<', pos);
-      if (value_start == std::string::npos)
-        return false;
-      const std::string key_separator =
-        Utilities::trim(d.substr(pos, value_start - pos));
-      pos = value_start;
-      if (!read_inner(d, pos, value))
-        return false;
-      std::string separator = ",";
-      const auto  by        = d.find(" separated by <", pos);
-      if (by != std::string::npos)
-        separator = d.substr(by + 15, d.find('>', by) - by - 15);
-      words.singular = "a " + separator_in_words(separator) + " list of 'key" +
-                       key_separator + " value' pairs (each key " +
-                       words_of(key).singular + ", each value " +
-                       words_of(value).singular + ")";
-      words.plural = words.singular;
-      return true;
-    }
-
-    // "[Integer range 1...30 (inclusive)]", "[Double 0...MAX_DOUBLE
-    // (inclusive)]", "[Integer]", "[Double]"
-    bool
-    range_in_words(const std::string &d, Words &words)
-    {
-      const bool integer = starts_with(d, "[Integer");
-      if (!integer && !starts_with(d, "[Double"))
-        return false;
-      const std::string noun   = integer ? "whole number" : "number";
-      const auto        dots   = d.find("...");
-      std::string       bounds = "";
-      if (dots != std::string::npos)
-        {
-          const auto        start = d.rfind(' ', dots) + 1;
-          const std::string low   = d.substr(start, dots - start);
-          const std::string high =
-            d.substr(dots + 3, d.find(' ', dots) - dots - 3);
-          const bool no_low =
-            low == "-MAX_DOUBLE" ||
-            low == std::to_string(std::numeric_limits<int>::min());
-          const bool no_high =
-            high == "MAX_DOUBLE" ||
-            high == std::to_string(std::numeric_limits<int>::max());
-          if (!no_low && !no_high)
-            bounds = integer && std::stol(high) == std::stol(low) + 1 ?
-                       ": " + low + " or " + high :
-                       " from " + low + " to " + high;
-          else if (!no_low)
-            bounds = " >= " + low;
-          else if (!no_high)
-            bounds = " <= " + high;
-        }
-      words.singular = "a " + noun + bounds;
-      words.plural   = noun + "s" + bounds;
-      return true;
-    }
-
-    Words
-    words_of(const std::string &d)
-    {
-      Words words;
-      if (range_in_words(d, words) || list_in_words(d, words) ||
-          map_in_words(d, words))
-        return words;
-      if (starts_with(d, "[Selection "))
-        {
-          std::string options;
-          for (const std::string &option :
-               Utilities::split_string_list(d.substr(11, d.size() - 12), '|'))
-            options += (options.empty() ? "" : ", ") + option;
-          return {"one of: " + options, "items from: " + options};
-        }
-      if (d == "[Bool]")
-        return {"true or false", "each true or false"};
-      if (d == "[Anything]")
-        return {"any text", "any texts"};
-      if (starts_with(d, "[DirectoryName"))
-        return {"a folder name", "folder names"};
-      if (starts_with(d, "[FileName"))
-        return {"a file name", "file names"};
-      return {d, d};
-    }
-
     // --------------------------------------------------- suggestions
 
     // Edit distance (optimal string alignment: a swap of two neighbours is
@@ -331,12 +119,6 @@ namespace dualcontact
   } // namespace
 
   std::string
-  pattern_in_words(const std::string &description)
-  {
-    return words_of(description).singular;
-  }
-
-  std::string
   closest_match(const std::string              &word,
                 const std::vector<std::string> &candidates)
   {
@@ -357,67 +139,6 @@ namespace dualcontact
     return best;
   }
 
-  // ------------------------------------------------------------ Catalog
-
-  /** What the handler declares: subsections, entries, pattern texts. */
-  struct ParameterReader::Catalog
-  {
-    struct Section
-    {
-      struct Entry
-      {
-        std::string pattern; // deal.II's description of the pattern
-        std::string default_value;
-      };
-      std::map<std::string, Entry>   entries;
-      std::map<std::string, Section> subsections;
-    };
-
-    explicit Catalog(const ParameterHandler &prm)
-    {
-      std::stringstream json;
-      prm.print_parameters(json, ParameterHandler::JSON);
-      boost::property_tree::ptree tree;
-      boost::property_tree::read_json(json, tree);
-      fill(root, tree);
-    }
-
-    static void
-    fill(Section &section, const boost::property_tree::ptree &tree)
-    {
-      for (const auto &[key, node] : tree)
-        if (node.get_optional<std::string>("value"))
-          section.entries[demangle(key)] = {
-            node.get<std::string>("pattern_description"),
-            node.get<std::string>("default_value")};
-        else if (!node.empty())
-          fill(section.subsections[demangle(key)], node);
-    }
-
-    const Section &
-    at(const std::vector<std::string> &path) const
-    {
-      const Section *section = &root;
-      for (const std::string &name : path)
-        section = &section->subsections.at(name);
-      return *section;
-    }
-
-    /** Every entry as (subsection path, name). */
-    void
-    all_entries(const Section                                    &section,
-                const std::string                                &path,
-                std::vector<std::pair<std::string, std::string>> &out) const
-    {
-      for (const auto &[name, pattern] : section.entries)
-        out.emplace_back(path, name);
-      for (const auto &[name, sub] : section.subsections)
-        all_entries(sub, path.empty() ? name : path + "/" + name, out);
-    }
-
-    Section root;
-  };
-
   /** The entries set by one layer (the scene, or the overrides). */
   struct ParameterReader::Layer
   {
@@ -427,9 +148,9 @@ namespace dualcontact
     std::map<std::string, std::filesystem::path> folder_of;
   };
 
-  ParameterReader::ParameterReader(ParameterHandler &prm)
+  ParameterReader::ParameterReader(ParameterHandler &prm, EntryCatalog catalog)
       : prm(prm)
-      , catalog(std::make_unique<Catalog>(prm))
+      , catalog(std::move(catalog))
       , scene(std::make_unique<Layer>(Layer{true, {}, {}}))
       , overrides(std::make_unique<Layer>(Layer{false, {}, {}}))
   {}
@@ -532,7 +253,7 @@ namespace dualcontact
         const std::string value = prm.get(entry);
         for (std::size_t i = 0; i < path.size(); ++i)
           prm.leave_subsection();
-        if (value != catalog->at(path).entries.at(entry).default_value)
+        if (value != catalog.find(path, entry)->default_value)
           given[name] = where;
       }
     return given;
@@ -696,12 +417,10 @@ namespace dualcontact
     std::vector<std::string> subsections;
     for (const auto &[name, opened] : path)
       subsections.push_back(name);
-    const Catalog::Section &section = catalog->at(subsections);
-    if (section.subsections.count(subsection) == 0)
+    const std::vector<std::string> names =
+      catalog.subsection_names(subsections);
+    if (std::find(names.begin(), names.end(), subsection) == names.end())
       {
-        std::vector<std::string> names;
-        for (const auto &[name, sub] : section.subsections)
-          names.push_back(name);
         const std::string guess = closest_match(subsection, names);
         const std::string parent =
           subsections.empty() ? "" : " of " + join(subsections);
@@ -724,30 +443,26 @@ namespace dualcontact
                           const std::filesystem::path    &folder,
                           Layer                          &layer)
   {
-    const std::string       name    = join(subsections, entry);
-    const Catalog::Section &section = catalog->at(subsections);
-    const auto              it      = section.entries.find(entry);
-    if (it == section.entries.end())
+    const std::string          name     = join(subsections, entry);
+    const EntryCatalog::Entry *declared = catalog.find(subsections, entry);
+    if (declared == nullptr)
       {
         // a typo in this subsection, or the right name in the wrong one
-        std::vector<std::string> names;
-        for (const auto &[known, pattern] : section.entries)
-          names.push_back(known);
-        std::string guess = closest_match(entry, names);
+        std::string guess =
+          closest_match(entry, catalog.entry_names(subsections));
         if (!guess.empty())
           guess = join(subsections, guess);
         else
           {
-            std::vector<std::pair<std::string, std::string>> all;
-            catalog->all_entries(catalog->root, "", all);
-            std::vector<std::string> entry_names;
-            for (const auto &[sub, known] : all)
-              entry_names.push_back(known);
-            const std::string match = closest_match(entry, entry_names);
+            std::vector<std::string> names;
+            for (const auto &[place, known] : catalog.entries())
+              names.push_back(place.second);
+            const std::string match = closest_match(entry, names);
             // the same name may be in several subsections: name them all
-            for (const auto &[sub, known] : all)
-              if (!match.empty() && known == match)
-                guess += (guess.empty() ? "" : "> or <") + sub + "/" + known;
+            for (const auto &[place, known] : catalog.entries())
+              if (!match.empty() && place.second == match)
+                guess += (guess.empty() ? "" : "> or <") +
+                         join(place.first, place.second);
           }
         throw InputError("<" + name + "> is not an entry of " +
                            (subsections.empty() ?
@@ -795,8 +510,7 @@ namespace dualcontact
       prm.leave_subsection();
     if (!matches)
       throw InputError("Invalid value '" + value + "' for <" + name +
-                         ">: expected " + pattern_in_words(it->second.pattern) +
-                         " (" + where + ").",
+                         ">: expected " + declared->words + " (" + where + ").",
                        exit_invalid_value);
     layer.set_at[name]    = where;
     layer.folder_of[name] = folder;

@@ -141,18 +141,18 @@ namespace dualcontact
   // ------------------------------------------------------------ Parameters
 
   void
-  Parameters::declare_parameters(ParameterHandler &prm)
+  Parameters::declare_parameters(EntryDeclarer &declarer)
   {
-    GeometryParameters::declare_parameters(prm);
-    MaterialParameters::declare_parameters(prm);
-    BoundaryParameters::declare_parameters(prm);
-    LoadParameters::declare_parameters(prm);
-    ObstacleParameters::declare_parameters(prm);
-    FrictionParameters::declare_parameters(prm);
-    SolverParameters::declare_parameters(prm);
-    RefinementParameters::declare_parameters(prm);
-    OutputParameters::declare_parameters(prm);
-    ExactSolutionParameters::declare_parameters(prm);
+    GeometryParameters::declare_parameters(declarer);
+    MaterialParameters::declare_parameters(declarer);
+    BoundaryParameters::declare_parameters(declarer);
+    LoadParameters::declare_parameters(declarer);
+    ObstacleParameters::declare_parameters(declarer);
+    FrictionParameters::declare_parameters(declarer);
+    SolverParameters::declare_parameters(declarer);
+    RefinementParameters::declare_parameters(declarer);
+    OutputParameters::declare_parameters(declarer);
+    ExactSolutionParameters::declare_parameters(declarer);
   }
 
   void
@@ -176,8 +176,9 @@ namespace dualcontact
                         const std::vector<std::string> &overrides)
   {
     ParameterHandler prm;
-    declare_parameters(prm);
-    ParameterReader reader(prm);
+    EntryDeclarer    declarer(prm);
+    declare_parameters(declarer);
+    ParameterReader reader(prm, declarer.catalog());
     reader.read_file(filename);
     // A file without a single 'set' line (in it or in a file it includes)
     // is empty, or only comments: every entry would keep its default, which
@@ -202,8 +203,9 @@ namespace dualcontact
   Parameters::read_string(const std::string &text, const std::string &overlay)
   {
     ParameterHandler prm;
-    declare_parameters(prm);
-    ParameterReader reader(prm);
+    EntryDeclarer    declarer(prm);
+    declare_parameters(declarer);
+    ParameterReader reader(prm, declarer.catalog());
     reader.read_text(text, "parameters");
     if (!overlay.empty())
       reader.read_overlay(overlay, "overlay");
@@ -342,7 +344,8 @@ namespace dualcontact
   default_parameter_file()
   {
     ParameterHandler prm;
-    Parameters::declare_parameters(prm);
+    EntryDeclarer    declarer(prm);
+    Parameters::declare_parameters(declarer);
     std::ostringstream out;
     prm.print_parameters(out, ParameterHandler::PRM);
     return out.str();

@@ -16,7 +16,7 @@
 #ifndef dualcontact_friction_law_h
 #define dualcontact_friction_law_h
 
-#include <deal.II/base/parameter_handler.h>
+#include <dualcontact/entry_declaration.h>
 
 #include <functional>
 #include <map>
@@ -48,13 +48,14 @@ namespace dualcontact
 
     /**
      * Declares the law's own entry, parameter_entry(), in subsection
-     * Friction (with its pattern, default and help text with units). Not
-     * called if another law declared the entry already.
+     * Friction through `declarer` (entry_declaration.h: its pattern, default
+     * and help text with units). Not called if another law declared the
+     * entry already.
      */
     virtual void
-    declare_parameters(dealii::ParameterHandler &prm) const
+    declare_parameters(EntryDeclarer &declarer) const
     {
-      (void)prm;
+      (void)declarer;
     }
 
     /**

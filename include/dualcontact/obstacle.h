@@ -150,11 +150,11 @@ namespace dualcontact
     std::string help;
 
     /**
-     * Declares the kind's entries, in the subsections it names itself. The
-     * kinds of one file that share entries register the same function,
-     * which is called once.
+     * Declares the kind's entries through `declarer` (entry_declaration.h),
+     * in the subsections it names itself. The kinds of one file that share
+     * entries register the same function, which is called once.
      */
-    void (*declare_parameters)(ParameterHandler &prm) = nullptr;
+    void (*declare_parameters)(EntryDeclarer &declarer) = nullptr;
 
     /**
      * The entries ("Subsection/Entry") the kind reads in a scene of
@@ -207,7 +207,7 @@ namespace dualcontact
    * registered kind's entries.
    */
   void
-  declare_obstacle_parameters(ParameterHandler &prm);
+  declare_obstacle_parameters(EntryDeclarer &declarer);
 
   /**
    * The obstacle <Obstacle/Type> names, built from the parameters; `length`

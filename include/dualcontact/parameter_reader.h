@@ -6,6 +6,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <dualcontact/entry_declaration.h>
+
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -19,9 +21,10 @@ namespace dualcontact
    * Fills a ParameterHandler (whose entries are declared) from a scene file,
    * then from overrides. Unlike ParameterHandler::parse_input:
    * - every error is one line that names the entry as <Subsection/Entry>,
-   *   the value given, what the entry expects in words (not deal.II's
-   *   pattern text) and where the line is (file:line), and throws InputError
-   *   with the project's exit code;
+   *   the value given, what the entry expects in words (those its
+   *   declaration recorded in the EntryCatalog, not deal.II's pattern text)
+   *   and where the line is (file:line), and throws InputError with the
+   *   project's exit code;
    * - an unknown entry or subsection gets the closest declared name as a
    *   suggestion ("did you mean <Friction/Coefficient>?");
    * - an entry set twice by the scene (its file and the files it includes)
@@ -37,7 +40,12 @@ namespace dualcontact
   class ParameterReader
   {
   public:
-    explicit ParameterReader(dealii::ParameterHandler &prm);
+    /**
+     * Reads into `prm`, whose entries were declared through an EntryDeclarer
+     * whose catalog() is `catalog`: the reader knows the subsections, the
+     * entries, their defaults and their patterns in words from it.
+     */
+    ParameterReader(dealii::ParameterHandler &prm, EntryCatalog catalog);
     ~ParameterReader();
 
     /** The scene file. InputError (exit 3) if it cannot be read. */
@@ -88,7 +96,6 @@ namespace dualcontact
     scene_has_entries() const;
 
   private:
-    struct Catalog;
     struct Layer;
 
     void
@@ -117,7 +124,7 @@ namespace dualcontact
            Layer                          &layer);
 
     dealii::ParameterHandler &prm;
-    std::unique_ptr<Catalog>  catalog;
+    EntryCatalog              catalog;
     std::unique_ptr<Layer>    scene;
     std::unique_ptr<Layer>    overrides;
     // the subsections the file being read is in, with where each was opened
@@ -125,17 +132,6 @@ namespace dualcontact
     // the files being read, to catch a file that includes itself
     std::vector<std::filesystem::path> open_files;
   };
-
-  /**
-   * What a pattern accepts, in words, from deal.II's description of it:
-   * "[Double -1...0.5 (inclusive)]" -> "a number from -1 to 0.5",
-   * "[Selection none|given|coulomb ]" -> "one of: none, given, coulomb",
-   * "[List of <[Double ...]> of length 2...3 (inclusive)]" -> "a
-   * comma-separated list of 2 or 3 numbers". Unknown descriptions are
-   * returned as they are.
-   */
-  std::string
-  pattern_in_words(const std::string &description);
 
   /**
    * The candidate closest to `word` (case-insensitive edit distance, a

@@ -1,14 +1,15 @@
 // All run-time parameters of a dualcontact scene: one struct per subsection of
 // the .prm file, each with its own file in source/parameters/ that declares
-// its entries (pattern, default, help text with units), parses them, checks
-// them (alone, against the dimension or the boundary conditions) and says
-// which of them have no effect in a scene.
+// its entries through an EntryDeclarer (pattern, default, help text with
+// units), parses them, checks them (alone, against the dimension or the
+// boundary conditions) and says which of them have no effect in a scene.
 #ifndef dualcontact_parameters_h
 #define dualcontact_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <dualcontact/entry_declaration.h>
 #include <dualcontact/name_table.h>
 
 #include <map>
@@ -137,7 +138,7 @@ namespace dualcontact
     std::vector<BoundaryManifold> manifolds;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     /**
@@ -169,7 +170,7 @@ namespace dualcontact
     mu() const;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     /** E within the magnitudes the solver represents (exit 5). */
@@ -190,7 +191,7 @@ namespace dualcontact
     ids_with(const BoundaryCondition condition) const;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     /** The ids against the geometry, the data against the conditions. */
@@ -204,7 +205,7 @@ namespace dualcontact
     std::string body_force;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
   };
@@ -223,7 +224,7 @@ namespace dualcontact
     std::vector<double> displacement;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     /**
@@ -252,7 +253,7 @@ namespace dualcontact
     unsigned int     max_steps         = 100;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     /** A law with friction needs contact, and its own entry. */
@@ -290,7 +291,7 @@ namespace dualcontact
     bool         time_reference_solve      = false;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     std::vector<IneffectiveRule>
@@ -314,7 +315,7 @@ namespace dualcontact
     bool compare_cold_start = false;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     std::vector<IneffectiveRule>
@@ -344,7 +345,7 @@ namespace dualcontact
     std::vector<std::vector<double>> probe_points;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     /** One coordinate per dimension in every probe point. */
@@ -362,7 +363,7 @@ namespace dualcontact
     double      peak_pressure      = 0.; // 0: not known
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
     std::vector<IneffectiveRule>
@@ -370,8 +371,9 @@ namespace dualcontact
   };
 
   /**
-   * All parameters of a run. `declare_parameters` fills a ParameterHandler,
-   * `parse_parameters` reads it back and checks the entries against each other
+   * All parameters of a run. `declare_parameters` declares every entry, the
+   * registered plugins' too, through an EntryDeclarer; `parse_parameters`
+   * reads the handler back and checks the entries against each other
    * (throwing InputError naming the entry on any inconsistency).
    */
   struct Parameters
@@ -388,7 +390,7 @@ namespace dualcontact
     ExactSolutionParameters exact;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
 

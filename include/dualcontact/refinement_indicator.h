@@ -68,8 +68,11 @@ namespace dualcontact
     /** What <Refinement/Strategy> = this name does: a sentence or two. */
     std::string help;
 
-    /** Declares its own entries (in subsection Refinement), or nullptr. */
-    void (*declare_parameters)(ParameterHandler &prm) = nullptr;
+    /**
+     * Declares its own entries (in subsection Refinement) through
+     * `declarer` (entry_declaration.h), or nullptr.
+     */
+    void (*declare_parameters)(EntryDeclarer &declarer) = nullptr;
 
     /** Its own entries, "Refinement/Entry". */
     std::vector<std::string> entries;

@@ -33,15 +33,15 @@ namespace dualcontact
       }
 
       void
-      declare_parameters(ParameterHandler &prm) const override
+      declare_parameters(EntryDeclarer &declarer) const override
       {
-        prm.enter_subsection("Friction");
-        prm.declare_entry("Coefficient",
-                          "0",
-                          Patterns::Anything(),
-                          "Coulomb friction coefficient F [-], >= 0: a "
-                          "number or an expression in x, y (z).");
-        prm.leave_subsection();
+        declarer.enter_subsection("Friction");
+        declarer.declare_entry("Coefficient",
+                               "0",
+                               EntryPattern::text(),
+                               "Coulomb friction coefficient F [-], >= 0: a "
+                               "number or an expression in x, y (z).");
+        declarer.leave_subsection();
       }
 
       bool

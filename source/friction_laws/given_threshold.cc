@@ -31,15 +31,15 @@ namespace dualcontact
       }
 
       void
-      declare_parameters(ParameterHandler &prm) const override
+      declare_parameters(EntryDeclarer &declarer) const override
       {
-        prm.enter_subsection("Friction");
-        prm.declare_entry("Threshold",
-                          "0",
-                          Patterns::Anything(),
-                          "Given friction threshold g [stress], >= 0: a "
-                          "number or an expression in x, y (z).");
-        prm.leave_subsection();
+        declarer.enter_subsection("Friction");
+        declarer.declare_entry("Threshold",
+                               "0",
+                               EntryPattern::text(),
+                               "Given friction threshold g [stress], >= 0: a "
+                               "number or an expression in x, y (z).");
+        declarer.leave_subsection();
       }
 
       bool

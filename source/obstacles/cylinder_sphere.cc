@@ -85,27 +85,27 @@ namespace dualcontact
 
     // the entries of both kinds, declared once
     void
-    declare(ParameterHandler &prm)
+    declare(EntryDeclarer &declarer)
     {
-      prm.enter_subsection("Obstacle");
-      prm.declare_entry("Center",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Cylinder, sphere: the centre c (for a 3D cylinder, "
-                        "a point on its axis) [length] (3D default: 0, 0, "
-                        "0).");
-      prm.declare_entry("Radius",
-                        "1",
-                        Patterns::Double(0.,
-                                         Patterns::Double::max_double_value),
-                        "Cylinder, sphere: the radius R [length]. Must be "
-                        "positive.");
-      prm.declare_entry("Axis",
-                        "0, 0, 1",
-                        Patterns::List(Patterns::Double(), 3, 3),
-                        "Cylinder in 3D: the direction of its axis [-]. "
-                        "Normalised on input; must not be zero.");
-      prm.leave_subsection();
+      declarer.enter_subsection("Obstacle");
+      declarer.declare_entry(
+        "Center",
+        "0, 0",
+        EntryPattern::list(EntryPattern::number(), 2, 3),
+        "Cylinder, sphere: the centre c (for a 3D cylinder, "
+        "a point on its axis) [length] (3D default: 0, 0, "
+        "0).");
+      declarer.declare_entry("Radius",
+                             "1",
+                             EntryPattern::number(0.),
+                             "Cylinder, sphere: the radius R [length]. Must be "
+                             "positive.");
+      declarer.declare_entry("Axis",
+                             "0, 0, 1",
+                             EntryPattern::list(EntryPattern::number(), 3, 3),
+                             "Cylinder in 3D: the direction of its axis [-]. "
+                             "Normalised on input; must not be zero.");
+      declarer.leave_subsection();
     }
 
     template <bool cylinder>

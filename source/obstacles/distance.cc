@@ -75,13 +75,13 @@ namespace dualcontact
     };
 
     void
-    declare(ParameterHandler &prm)
+    declare(EntryDeclarer &declarer)
     {
-      prm.enter_subsection("Obstacle");
-      prm.declare_entry(
+      declarer.enter_subsection("Obstacle");
+      declarer.declare_entry(
         "Distance",
         "",
-        Patterns::Anything(),
+        EntryPattern::text(),
         "Distance: the signed distance d(x, y) (2D) or d(x, y, z) (3D) from "
         "the obstacle's surface [length], > 0 where the body is, in the "
         "function parser's syntax (constants E, nu, L as elsewhere). Its "
@@ -89,7 +89,7 @@ namespace dualcontact
         "central differences and normalised. Example: a flat punch of "
         "half-width 0.1 whose face lies on y = 1, above the body: "
         "'max(1 - y, abs(x) - 0.1)'.");
-      prm.leave_subsection();
+      declarer.leave_subsection();
     }
 
     std::vector<std::string>

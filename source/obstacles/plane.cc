@@ -62,24 +62,25 @@ namespace dualcontact
     };
 
     void
-    declare(ParameterHandler &prm)
+    declare(EntryDeclarer &declarer)
     {
-      prm.enter_subsection("Foundation");
-      prm.declare_entry("Point",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Plane obstacle (the foundation, a half-space): a "
-                        "point p on its boundary [length] (3D default: 0, 0, "
-                        "0).");
-      prm.declare_entry(
+      declarer.enter_subsection("Foundation");
+      declarer.declare_entry(
+        "Point",
+        "0, 0",
+        EntryPattern::list(EntryPattern::number(), 2, 3),
+        "Plane obstacle (the foundation, a half-space): a "
+        "point p on its boundary [length] (3D default: 0, 0, "
+        "0).");
+      declarer.declare_entry(
         "Normal",
         "0, 1",
-        Patterns::List(Patterns::Double(), 2, 3),
+        EntryPattern::list(EntryPattern::number(), 2, 3),
         "Plane obstacle: the normal m of its boundary, pointing from the "
         "foundation into the body [-]. Normalised on input; must not be "
         "zero. The initial gap is g0(x) = (x - p).m. Default: +y in 2D, +z "
         "in 3D (0, 0, 1).");
-      prm.leave_subsection();
+      declarer.leave_subsection();
     }
 
     std::vector<std::string>

@@ -49,17 +49,12 @@ namespace dualcontact
     }
 
     // The pattern of an "id: value" list (ids 0..255).
-    Patterns::Map
-    id_map_pattern(const Patterns::PatternBase &value_pattern)
+    EntryPattern
+    id_map_pattern(const EntryPattern &value_pattern)
     {
-      return Patterns::Map(Patterns::Integer(0, 255),
-                           value_pattern,
-                           0,
-                           Patterns::Map::max_int_value,
-                           ",",
-                           ":");
+      return EntryPattern::map(EntryPattern::whole_number(0, 255),
+                               value_pattern);
     }
-
   } // namespace
 
   const NameTable<BoundaryCondition> &
@@ -98,13 +93,14 @@ namespace dualcontact
   }
 
   void
-  BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  BoundaryParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Boundary conditions");
-    prm.declare_entry(
+    declarer.enter_subsection("Boundary conditions");
+    declarer.declare_entry(
       "Conditions",
       "",
-      id_map_pattern(Patterns::Selection(boundary_condition_names().names())),
+      id_map_pattern(
+        EntryPattern::selection(boundary_condition_names().names())),
       "The condition on each boundary id, as a list 'id: condition, id: "
       "condition'. Conditions: 'free' (zero traction), 'fixed' (all "
       "displacement components prescribed, see 'Displacements'), 'normal "
@@ -113,24 +109,24 @@ namespace dualcontact
       "(unilateral contact with the rigid foundation, with the friction law "
       "of subsection Friction). Ids not listed are free. An id may appear "
       "only once.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Displacements",
       "",
-      id_map_pattern(Patterns::Anything()),
+      id_map_pattern(EntryPattern::text()),
       "Prescribed displacement on 'fixed' ids, as 'id: u_x; u_y' [length]; "
       "each component an expression in x, y (z) with the constants pi, E, "
       "nu, lambda, mu (no commas or colons inside). Fixed ids not listed "
       "here are clamped (zero displacement).");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Tractions",
       "",
-      id_map_pattern(Patterns::Anything()),
+      id_map_pattern(EntryPattern::text()),
       "Prescribed traction on 'traction' ids, as 'id: T_x; T_y' [stress = "
       "force/length^2]; each component an expression in x, y (z) with the "
       "constants pi, E, nu, lambda, mu (no commas or colons inside). A "
       "pressure p on a face with outer normal n is the traction -p n. Every "
       "'traction' id must be listed.");
-    prm.leave_subsection();
+    declarer.leave_subsection();
   }
 
   void

@@ -11,29 +11,29 @@ namespace dualcontact
   using namespace dealii;
 
   void
-  ExactSolutionParameters::declare_parameters(ParameterHandler &prm)
+  ExactSolutionParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Exact solution");
-    prm.declare_entry(
+    declarer.enter_subsection("Exact solution");
+    declarer.declare_entry(
       "Displacement",
       "",
-      Patterns::Anything(),
+      EntryPattern::text(),
       "If known, the exact displacement 'u_x; u_y' [length] as expressions "
       "in x, y (z) with the constants pi, E, nu, lambda, mu; the L2 and H1 "
       "errors are then reported per cycle. Empty: none is known.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Contact pressure",
       "",
-      Patterns::Anything(),
+      EntryPattern::text(),
       "If known, the exact contact pressure p = -sigma_n on the contact "
       "boundary [stress], an expression in x, y (z) with the constants pi, "
       "E, nu, lambda, mu (functions such as sqrt, max may be used); the "
       "relative L2 error on Gamma_C of l1 (interpolated between the contact nodes) is then reported per cycle. "
       "Empty: none is known.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Contact half-width",
       "0",
-      Patterns::Double(0.),
+      EntryPattern::number(0.),
       "If known, the exact half-width a of the contact zone [length] in 2D, "
       "its radius in 3D; the relative error of the computed one (edges "
       "extrapolated; in 3D along two lines through the zone's centre, where "
@@ -41,22 +41,22 @@ namespace dualcontact
       "whole: a model cut by symmetry planes through that centre (a half or "
       "quarter ball) is measured as mirrored across them; a zone cut "
       "anywhere else is measured as the part in the model. 0: not known.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Stick half-width",
       "0",
-      Patterns::Double(0.),
+      EntryPattern::number(0.),
       "If known, the exact half-width c of the stick zone [length] in 2D, "
       "its radius in 3D (e.g. Cattaneo-Mindlin); the relative error of the "
       "computed one (each end half-way between the last sticking and the "
       "first slipping node) is then reported per cycle. Needs friction. 0: "
       "not known.");
-    prm.declare_entry("Peak pressure",
-                      "0",
-                      Patterns::Double(0.),
-                      "If known, the exact largest contact pressure p0 "
-                      "[stress]; the relative error of max l1 is then "
-                      "reported per cycle. 0: not known.");
-    prm.leave_subsection();
+    declarer.declare_entry("Peak pressure",
+                           "0",
+                           EntryPattern::number(0.),
+                           "If known, the exact largest contact pressure p0 "
+                           "[stress]; the relative error of max l1 is then "
+                           "reported per cycle. 0: not known.");
+    declarer.leave_subsection();
   }
 
   void

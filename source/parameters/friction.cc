@@ -67,9 +67,9 @@ namespace dualcontact
   }
 
   void
-  FrictionParameters::declare_parameters(ParameterHandler &prm)
+  FrictionParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Friction");
+    declarer.enter_subsection("Friction");
     // the laws registered in source/friction_laws/ (friction_law.h)
     std::string names;
     for (const std::string &name : friction_law_names())
@@ -78,11 +78,12 @@ namespace dualcontact
     for (const std::string &name : friction_law_names())
       help += std::string(help.empty() ? "" : ", ") + "'" + name + "' (" +
               create_friction_law(name)->help() + ")";
-    prm.declare_entry("Law",
-                      "none",
-                      Patterns::Selection(names),
-                      "Friction on the contact boundary, one of " + help + ".");
-    prm.leave_subsection();
+    declarer.declare_entry("Law",
+                           "none",
+                           EntryPattern::selection(names),
+                           "Friction on the contact boundary, one of " + help +
+                             ".");
+    declarer.leave_subsection();
     // each law's own entry, once
     std::set<std::string> declared;
     for (const std::string &name : friction_law_names())
@@ -90,36 +91,37 @@ namespace dualcontact
         const auto        law   = create_friction_law(name);
         const std::string entry = law->parameter_entry();
         if (!entry.empty() && declared.insert(entry).second)
-          law->declare_parameters(prm);
+          law->declare_parameters(declarer);
       }
-    prm.enter_subsection("Friction");
-    prm.declare_entry(
+    declarer.enter_subsection("Friction");
+    declarer.declare_entry(
       "Threshold iteration",
       "merged",
-      Patterns::Selection(friction_strategy_names().names()),
+      EntryPattern::selection(friction_strategy_names().names()),
       "Coulomb only, the threshold iteration: 'nested' solves the "
       "given-friction problem with the threshold g fixed, then sets g = F "
       "l1, until g settles (successive approximations); 'merged' sets g = F "
       "l1 after every Uzawa step (one loop). Both give the same solution "
       "within the tolerances.");
-    prm.declare_entry("Initial threshold",
-                      "zero",
-                      Patterns::Selection(initial_threshold_names().names()),
-                      "Coulomb only: g^0 = 0, or g^0 = F times the contact "
-                      "pressure of the frictionless problem (solved first).");
-    prm.declare_entry(
+    declarer.declare_entry(
+      "Initial threshold",
+      "zero",
+      EntryPattern::selection(initial_threshold_names().names()),
+      "Coulomb only: g^0 = 0, or g^0 = F times the contact "
+      "pressure of the frictionless problem (solved first).");
+    declarer.declare_entry(
       "Threshold tolerance",
       "1e-6",
-      Patterns::Double(1e-14, 1.),
+      EntryPattern::number(1e-14, 1.),
       "Coulomb only: the threshold iteration stops when |g_new - g| <= tol "
       "|g_new| (nodal Euclidean norms) [-].");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Maximum threshold steps",
       "100",
-      Patterns::Integer(1),
+      EntryPattern::whole_number(1),
       "Coulomb only: the threshold iteration gives up (with an error naming "
       "the cause) after this many steps [-].");
-    prm.leave_subsection();
+    declarer.leave_subsection();
   }
 
   void

@@ -146,17 +146,18 @@ namespace dualcontact
   }
 
   void
-  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  GeometryParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Geometry");
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension of the body. 2 means plane strain.");
-    prm.declare_entry(
+    declarer.enter_subsection("Geometry");
+    declarer.declare_entry(
+      "Dimension",
+      "2",
+      EntryPattern::whole_number(2, 3),
+      "Space dimension of the body. 2 means plane strain.");
+    declarer.declare_entry(
       "Type",
       "rectangle",
-      Patterns::Selection(geometry_type_names().names()),
+      EntryPattern::selection(geometry_type_names().names()),
       "Shape of the body. 'rectangle': an axis-parallel box with boundary ids "
       "0 (x = x_min), 1 (x = x_max), 2 (y = y_min), 3 (y = y_max) (and 4, 5 "
       "for z in 3D). 'half disc': the lower half of a disc (ball in 3D) of "
@@ -168,10 +169,10 @@ namespace dualcontact
       "hexahedra in 3D), whose physical groups are the boundary ids; "
       "<Geometry/Manifolds> makes curved parts stay curved under refinement "
       "(doc/meshes.md).");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Mesh file",
       "",
-      Patterns::FileName(Patterns::FileName::input),
+      EntryPattern::file_name(),
       "Type 'mesh file': the Gmsh mesh (.msh, ASCII, format 2.2 or 4.1), a "
       "path relative to the folder of the .prm file that sets it (given by "
       "--set: relative to the working directory). It must hold only "
@@ -180,10 +181,10 @@ namespace dualcontact
       "(3D) become boundary ids, the numbers of <Boundary conditions/"
       "Conditions>; every boundary face must be in one (Gmsh's 'Physical "
       "Curve(0) = {...};' gives id 0). Coordinates are in [length].");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Manifolds",
       "",
-      Patterns::Anything(),
+      EntryPattern::text(),
       "Type 'mesh file': the curved parts of the boundary, so that refinement "
       "puts new vertices on the curve instead of on the straight line "
       "between old ones. A list separated by ';' of 'id: circle center x, y "
@@ -195,57 +196,61 @@ namespace dualcontact
       "interior then follows a transfinite interpolation of the boundary, "
       "so that refined cells stay well shaped. Empty: every face stays "
       "straight.");
-    prm.declare_entry("Lower left corner",
-                      "0, 0",
-                      Patterns::List(Patterns::Double(), 2, 3),
-                      "Rectangle: the corner with the smallest coordinates "
-                      "[length], one value per dimension (3D default: 0, 0, "
-                      "0).");
-    prm.declare_entry("Upper right corner",
-                      "1, 1",
-                      Patterns::List(Patterns::Double(), 2, 3),
-                      "Rectangle: the corner with the largest coordinates "
-                      "[length], one value per dimension (3D default: 1, 1, "
-                      "1).");
-    prm.declare_entry("Subdivisions",
-                      "1, 1",
-                      Patterns::List(Patterns::Integer(1), 2, 3),
-                      "Rectangle: number of cells of the coarse mesh in each "
-                      "direction [-] (3D default: 1, 1, 1).");
-    prm.declare_entry("Center",
-                      "0, 0",
-                      Patterns::List(Patterns::Double(), 2, 3),
-                      "Half disc (3D: half ball): centre of the disc, i.e. "
-                      "the middle of the flat top; the curved part lies below "
-                      "it, toward -y (3D: -z) [length] (3D default: 0, 0, "
-                      "0).");
-    prm.declare_entry("Radius",
-                      "1",
-                      Patterns::Double(0., Patterns::Double::max_double_value),
-                      "Half disc: radius R [length]. Must be positive.");
-    prm.declare_entry(
+    declarer.declare_entry(
+      "Lower left corner",
+      "0, 0",
+      EntryPattern::list(EntryPattern::number(), 2, 3),
+      "Rectangle: the corner with the smallest coordinates "
+      "[length], one value per dimension (3D default: 0, 0, "
+      "0).");
+    declarer.declare_entry(
+      "Upper right corner",
+      "1, 1",
+      EntryPattern::list(EntryPattern::number(), 2, 3),
+      "Rectangle: the corner with the largest coordinates "
+      "[length], one value per dimension (3D default: 1, 1, "
+      "1).");
+    declarer.declare_entry(
+      "Subdivisions",
+      "1, 1",
+      EntryPattern::list(EntryPattern::whole_number(1), 2, 3),
+      "Rectangle: number of cells of the coarse mesh in each "
+      "direction [-] (3D default: 1, 1, 1).");
+    declarer.declare_entry(
+      "Center",
+      "0, 0",
+      EntryPattern::list(EntryPattern::number(), 2, 3),
+      "Half disc (3D: half ball): centre of the disc, i.e. "
+      "the middle of the flat top; the curved part lies below "
+      "it, toward -y (3D: -z) [length] (3D default: 0, 0, "
+      "0).");
+    declarer.declare_entry("Radius",
+                           "1",
+                           EntryPattern::number(0.),
+                           "Half disc: radius R [length]. Must be positive.");
+    declarer.declare_entry(
       "Pre-refinement steps",
       "0",
-      Patterns::Integer(0, 30),
+      EntryPattern::whole_number(0, 30),
       "Number of times the cells near the obstacle (the foundation plane, or "
       "the surface of subsection Obstacle) are refined before the first cycle "
       "(after the initial global refinement) [-]. A cell counts as near if "
       "one of its vertices lies within 'Pre-refinement distance' of the "
       "obstacle in its prescribed position (after <Obstacle/Displacement>).");
-    prm.declare_entry("Pre-refinement distance",
-                      "0",
-                      Patterns::Double(0.),
-                      "Distance from the obstacle within which cells are "
-                      "pre-refined in the first step [length].");
-    prm.declare_entry(
+    declarer.declare_entry("Pre-refinement distance",
+                           "0",
+                           EntryPattern::number(0.),
+                           "Distance from the obstacle within which cells are "
+                           "pre-refined in the first step [length].");
+    declarer.declare_entry(
       "Pre-refinement grading",
       "1",
-      Patterns::Double(0., 1.),
+      EntryPattern::number(0., 1.),
       "Factor in (0, 1] by which the pre-refinement distance shrinks from one "
       "step to the next [-]: 1 refines the same band every step (a sharp "
       "jump in cell size at its edge), 0.5 gives a graded mesh whose cells "
       "grow with the distance from the obstacle.");
-    prm.leave_subsection();
+    declarer.leave_subsection();
   }
 
   void

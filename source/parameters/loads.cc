@@ -6,18 +6,18 @@ namespace dualcontact
   using namespace dealii;
 
   void
-  LoadParameters::declare_parameters(ParameterHandler &prm)
+  LoadParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Loads");
-    prm.declare_entry(
+    declarer.enter_subsection("Loads");
+    declarer.declare_entry(
       "Body force",
       "0; 0",
-      Patterns::Anything(),
+      EntryPattern::text(),
       "Body force f per unit volume, 'f_x; f_y' (one component per "
       "dimension) [force/length^3]; each an expression in x, y (z) with the "
       "constants pi, E, nu, lambda, mu. All zero: no body force is "
       "assembled.");
-    prm.leave_subsection();
+    declarer.leave_subsection();
   }
 
   void

@@ -23,20 +23,21 @@ namespace dualcontact
   }
 
   void
-  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  MaterialParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Material");
-    prm.declare_entry("Young's modulus",
-                      "1",
-                      Patterns::Double(0., Patterns::Double::max_double_value),
-                      "Young's modulus E [stress = force/length^2, e.g. Pa "
-                      "in N-m-Pa or MPa in N-mm-MPa]. Must be positive.");
-    prm.declare_entry("Poisson's ratio",
-                      "0.3",
-                      Patterns::Double(-1., 0.5),
-                      "Poisson's ratio nu [-], in (-1, 0.5). 2D is plane "
-                      "strain.");
-    prm.leave_subsection();
+    declarer.enter_subsection("Material");
+    declarer.declare_entry(
+      "Young's modulus",
+      "1",
+      EntryPattern::number(0.),
+      "Young's modulus E [stress = force/length^2, e.g. Pa "
+      "in N-m-Pa or MPa in N-mm-MPa]. Must be positive.");
+    declarer.declare_entry("Poisson's ratio",
+                           "0.3",
+                           EntryPattern::number(-1., 0.5),
+                           "Poisson's ratio nu [-], in (-1, 0.5). 2D is plane "
+                           "strain.");
+    declarer.leave_subsection();
   }
 
   void

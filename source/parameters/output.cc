@@ -20,40 +20,41 @@ namespace dualcontact
   }
 
   void
-  OutputParameters::declare_parameters(ParameterHandler &prm)
+  OutputParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Output");
-    prm.declare_entry("Directory",
-                      "output",
-                      Patterns::DirectoryName(),
-                      "Folder for all output files; created if missing.");
-    prm.declare_entry("Write vtu",
-                      "true",
-                      Patterns::Bool(),
-                      "Write .pvtu/.vtu files (one set per cycle) for "
-                      "ParaView.");
-    prm.declare_entry("Print timing",
-                      "true",
-                      Patterns::Bool(),
-                      "Print wall times on screen. Tests switch this off so "
-                      "that the screen output is deterministic.");
-    prm.declare_entry(
+    declarer.enter_subsection("Output");
+    declarer.declare_entry("Directory",
+                           "output",
+                           EntryPattern::folder_name(),
+                           "Folder for all output files; created if missing.");
+    declarer.declare_entry("Write vtu",
+                           "true",
+                           EntryPattern::boolean(),
+                           "Write .pvtu/.vtu files (one set per cycle) for "
+                           "ParaView.");
+    declarer.declare_entry(
+      "Print timing",
+      "true",
+      EntryPattern::boolean(),
+      "Print wall times on screen. Tests switch this off so "
+      "that the screen output is deterministic.");
+    declarer.declare_entry(
       "Verbosity",
       "normal",
-      Patterns::Selection(verbosity_names().names()),
+      EntryPattern::selection(verbosity_names().names()),
       "How much the screen shows (no unit). quiet: the scene and one line "
       "per refinement cycle, then the summary table; normal: also a legend, "
       "one line per Uzawa step and per threshold step, and each cycle's "
       "results; detailed: also one line per Newton step with its CG "
       "iterations. Warnings and errors are always shown; cycles.csv and "
       "iterations.csv hold everything at every level.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Probe points",
       "",
-      Patterns::List(Patterns::List(Patterns::Double(), 2, 3, ","),
-                     0,
-                     Patterns::List::max_int_value,
-                     ";"),
+      EntryPattern::list(EntryPattern::list(EntryPattern::number(), 2, 3),
+                         0,
+                         Patterns::List::max_int_value,
+                         ";"),
       "Points of the body [length] at which the displacement [length] and "
       "the stress [stress] are written to probes.csv for every cycle, as "
       "'x, y; x, y' (3D: 'x, y, z; ...'): one row per cycle and point, with "
@@ -67,7 +68,7 @@ namespace dualcontact
       "boundary and is evaluated at the nearest point of the mesh; a point "
       "farther outside is an input error, found on the first mesh. Empty: no "
       "probes.");
-    prm.leave_subsection();
+    declarer.leave_subsection();
   }
 
   void

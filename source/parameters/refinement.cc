@@ -16,68 +16,70 @@ namespace dualcontact
   using namespace dealii;
 
   void
-  RefinementParameters::declare_parameters(ParameterHandler &prm)
+  RefinementParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Refinement");
-    prm.declare_entry("Initial global refinement",
-                      "0",
-                      Patterns::Integer(0, 20),
-                      "Number of global refinements of the coarse mesh before "
-                      "the first cycle [-].");
-    prm.declare_entry("Number of cycles",
-                      "1",
-                      Patterns::Integer(1, 30),
-                      "Number of meshes solved on; each after the first is "
-                      "the previous one refined [-].");
+    declarer.enter_subsection("Refinement");
+    declarer.declare_entry(
+      "Initial global refinement",
+      "0",
+      EntryPattern::whole_number(0, 20),
+      "Number of global refinements of the coarse mesh before "
+      "the first cycle [-].");
+    declarer.declare_entry(
+      "Number of cycles",
+      "1",
+      EntryPattern::whole_number(1, 30),
+      "Number of meshes solved on; each after the first is "
+      "the previous one refined [-].");
     std::string names, help;
     for (const std::string &name : refinement_indicator_names())
       {
         names += (names.empty() ? "" : "|") + name;
         help += " '" + name + "' " + refinement_indicator_kind(name).help;
       }
-    prm.declare_entry("Strategy",
-                      "global",
-                      Patterns::Selection(names),
-                      "How the mesh is refined between cycles; every mesh "
-                      "is the previous one refined (nested meshes)." +
-                        help);
-    prm.declare_entry(
+    declarer.declare_entry("Strategy",
+                           "global",
+                           EntryPattern::selection(names),
+                           "How the mesh is refined between cycles; every mesh "
+                           "is the previous one refined (nested meshes)." +
+                             help);
+    declarer.declare_entry(
       "Refine fraction",
       "0.3",
-      Patterns::Double(0., 1.),
+      EntryPattern::number(0., 1.),
       "Adaptive strategies (not 'global'): the fraction of the cells, "
       "those with the largest indicators, refined per cycle "
       "[-].");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Coarsen fraction",
       "0",
-      Patterns::Double(0., 1.),
+      EntryPattern::number(0., 1.),
       "Adaptive strategies (not 'global'): the fraction of the cells, "
       "those with the smallest indicators, coarsened per "
       "cycle [-]. Refine + coarsen fractions must not exceed "
       "1.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Nested iteration",
       "true",
-      Patterns::Bool(),
+      EntryPattern::boolean(),
       "Carry the displacement v (by interpolation) and the multipliers l1, "
       "l2 and the threshold g (by interpolation of their nodal values, then "
       "projected so that l1 >= 0 and |l2| <= g) from each mesh to the next, "
       "and start the solver there. false: every mesh starts cold, from v = 0 "
       "and l1 = l2 = 0.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Compare with cold start",
       "false",
-      Patterns::Bool(),
+      EntryPattern::boolean(),
       "With nested iteration: also solve each refined mesh from a cold "
       "start, before the nested solve, and report the Uzawa, loop-1 and "
       "Newton steps and the time saved, and the difference of the two "
       "solutions (columns cold_* of cycles.csv). Doubles the cost.");
-    prm.leave_subsection();
+    declarer.leave_subsection();
     // the indicators' own entries
     for (const std::string &name : refinement_indicator_names())
       if (refinement_indicator_kind(name).declare_parameters != nullptr)
-        refinement_indicator_kind(name).declare_parameters(prm);
+        refinement_indicator_kind(name).declare_parameters(declarer);
   }
 
   void

@@ -15,29 +15,31 @@ namespace dualcontact
   using namespace dealii;
 
   void
-  SolverParameters::declare_parameters(ParameterHandler &prm)
+  SolverParameters::declare_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Solver");
-    prm.declare_entry("Linear solver tolerance",
-                      "1e-10",
-                      Patterns::Double(1e-16, 1.),
-                      "Relative tolerance of CG: stop when |residual| <= tol "
-                      "|right-hand side| [-].");
-    prm.declare_entry("Maximum linear iterations",
-                      "2000",
-                      Patterns::Integer(1),
-                      "Maximum number of CG iterations per linear solve [-].");
-    prm.declare_entry(
+    declarer.enter_subsection("Solver");
+    declarer.declare_entry(
+      "Linear solver tolerance",
+      "1e-10",
+      EntryPattern::number(1e-16, 1.),
+      "Relative tolerance of CG: stop when |residual| <= tol "
+      "|right-hand side| [-].");
+    declarer.declare_entry(
+      "Maximum linear iterations",
+      "2000",
+      EntryPattern::whole_number(1),
+      "Maximum number of CG iterations per linear solve [-].");
+    declarer.declare_entry(
       "AMG with rotation modes",
       "true",
-      Patterns::Bool(),
+      EntryPattern::boolean(),
       "Give the algebraic multigrid all rigid-body modes (translations and "
       "rotations) as near-null space; false gives it the translations only.");
 
-    prm.declare_entry(
+    declarer.declare_entry(
       "Augmentation parameter",
       "10",
-      Patterns::Double(1e-3, 1e12),
+      EntryPattern::number(1e-3, 1e12),
       "r_rel [-], > 0: the augmentation parameter of the modified Lagrangian "
       "is r = r_rel (lambda + 2 mu) / h_C [stress/length], with h_C the "
       "smallest face diameter on the contact boundary and lambda + 2 mu the "
@@ -49,10 +51,10 @@ namespace dualcontact
       "Uzawa steps>). From 1e-3 to 1e12: below, the contact terms vanish "
       "beside the proximal term and the body drifts for thousands of "
       "steps.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Tangential augmentation parameter",
       "auto",
-      Patterns::Anything(),
+      EntryPattern::text(),
       "r_t,rel [-]: 'auto' or a number > 0. The friction terms use their own "
       "augmentation r_t = r_t,rel (lambda + 2 mu) / h_C [stress/length] (as "
       "r, with r_t,rel for r_rel), in the update l2 <- proj_g(l2 + r_t v_t) "
@@ -62,10 +64,10 @@ namespace dualcontact
       "step (the projection onto the friction disc), and r_rel / 4 halves "
       "the Coulomb solves; in 2D (an interval, no disc) a smaller r_t only "
       "costs Uzawa steps (doc/theory.md §5). Ignored without friction.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Proximal parameter",
       "1e-3",
-      Patterns::Double(0., 1e3),
+      EntryPattern::number(0., 1e3),
       "chi_rel [-], > 0: the proximal weight is chi = chi_rel E / L^2 "
       "[stress/length^2], with L the body's size (longest side, or radius). "
       "It makes each Uzawa step strongly convex, also when only contact "
@@ -74,82 +76,82 @@ namespace dualcontact
       "where it is, and the Newton and Uzawa iterations stall; from 1 on "
       "the Uzawa steps already stop before the solution is reached to the "
       "tolerance (doc/robustness.md).");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Uzawa tolerance",
       "1e-8",
-      Patterns::Double(1e-15, 1.),
+      EntryPattern::number(1e-15, 1.),
       "The Uzawa iteration stops when the relative changes of l1 and of v "
       "and the relative constraint violation are all below "
       "this [-].");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Maximum Uzawa steps",
       "500",
-      Patterns::Integer(1),
+      EntryPattern::whole_number(1),
       "The Uzawa iteration gives up (with an error) after this many steps "
       "[-].");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Newton tolerance factor",
       "1e-2",
-      Patterns::Double(1e-8, 1.),
+      EntryPattern::number(1e-8, 1.),
       "The Newton iteration's final tolerance on the relative gradient is this factor "
       "times the Uzawa tolerance [-] (at most 0.01 is advised).");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Initial inner tolerance",
       "1e-2",
-      Patterns::Double(0., 1.),
+      EntryPattern::number(0., 1.),
       "The Newton iteration's relative gradient tolerance in the first Uzawa step [-]; it "
       "shrinks geometrically from step to step (summable errors, as the "
       "convergence theorem needs) down to the final tolerance.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Inner tolerance reduction",
       "0.5",
-      Patterns::Double(0., 1.),
+      EntryPattern::number(0., 1.),
       "The Newton iteration's tolerance stays below initial tolerance times "
       "this factor to the power (Uzawa step - 1) [-], in "
       "(0, 1): a geometric envelope that keeps the errors "
       "summable.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Inner tolerance factor",
       "1e-2",
-      Patterns::Double(0., 1.),
+      EntryPattern::number(0., 1.),
       "The Newton iteration stops once its gradient fell by this factor "
       "within the Uzawa step (and is below the envelope), or "
       "is below the final tolerance [-]: no Uzawa step is "
       "solved much more accurately than the iteration can "
       "use.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Maximum Newton steps",
       "50",
-      Patterns::Integer(1),
+      EntryPattern::whole_number(1),
       "The Newton iteration gives up (with an error) after this many steps "
       "in one Uzawa step [-], unless the line search is cutting its steps "
       "short at changes of the node statuses (gross slip with a large r): "
       "then it goes on, at most one more step per contact node.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Line search",
       "true",
-      Patterns::Bool(),
+      EntryPattern::boolean(),
       "Exact line search on the Uzawa step's functional (a convex "
       "piecewise quadratic along each Newton direction); makes "
       "Newton globally convergent. false: full steps.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "AMG rebuild fraction",
       "0.05",
-      Patterns::Double(0., 1.),
+      EntryPattern::number(0., 1.),
       "Rebuild the AMG preconditioner of the Newton matrix only when the "
       "number of contact nodes that changed status since it was built "
       "exceeds this fraction of the active set [-], or when the last CG "
       "solve needed more than 1.5 times (plus 10) the iterations of the "
       "first one after the set-up; 0 rebuilds it at every Newton step.");
-    prm.declare_entry(
+    declarer.declare_entry(
       "Time a reference linear solve",
       "false",
-      Patterns::Bool(),
+      EntryPattern::boolean(),
       "After each contact solve, also time one linear elasticity solve on "
       "the same mesh (AMG set-up and CG to the linear tolerance on the final "
       "Newton matrix, i.e. with the contact nodes held) and report the ratio "
       "of the times (assembly included in both). For benchmarks.");
-    prm.leave_subsection();
+    declarer.leave_subsection();
   }
 
   void

@@ -108,17 +108,17 @@ namespace dualcontact
     }
 
     void
-    declare(ParameterHandler &prm)
+    declare(EntryDeclarer &declarer)
     {
-      prm.enter_subsection("Refinement");
-      prm.declare_entry(
+      declarer.enter_subsection("Refinement");
+      declarer.declare_entry(
         "Contact indicator weight",
         "1",
-        Patterns::Double(0.),
+        EntryPattern::number(0.),
         "'contact': the weight of the Gamma_C term against Kelly's volume "
         "term [-]. Both are measured in strain^2 * length, so the weight has "
         "no units; 0 gives 'kelly'.");
-      prm.leave_subsection();
+      declarer.leave_subsection();
     }
 
     const bool registered = register_refinement_indicator(

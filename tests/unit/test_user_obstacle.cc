@@ -77,15 +77,15 @@ namespace
   };
 
   void
-  declare(ParameterHandler &prm)
+  declare(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Obstacle");
-    prm.declare_entry("Floor height",
-                      "0",
-                      Patterns::Double(),
-                      "Floor: the height h of the floor y = h (2D), z = h "
-                      "(3D) [length]; at most 0.");
-    prm.leave_subsection();
+    declarer.enter_subsection("Obstacle");
+    declarer.declare_entry("Floor height",
+                           "0",
+                           EntryPattern::number(),
+                           "Floor: the height h of the floor y = h (2D), z = h "
+                           "(3D) [length]; at most 0.");
+    declarer.leave_subsection();
   }
 
   std::vector<std::string>
