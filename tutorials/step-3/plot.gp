@@ -4,26 +4,26 @@ set datafile separator ','
 set terminal svg size 720,460 dynamic font 'sans,13'
 set grid
 
-# Part 1: the multipliers along the wall (the merged solution on the finest
+# The multipliers along the wall (the merged solution on the finest
 # mesh). Slip where |l2| = F l1.
 set output 'stick_slip.svg'
-set title 'Part 1: the block against the wall (F = 0.3), finest mesh'
+set title 'The block against the wall (F = 0.3), finest mesh'
 set xlabel 'position along the wall y'
 set ylabel 'traction'
 set xrange [0:1]
 set yrange [0:22]
 set key at graph 0.03, graph 0.62 left top box opaque
 plot 'output/contact.csv' using 1:2 skip 1 with lines lw 2 lc rgb '#1f77b4' title 'pressure l1', \
-     ''                   using 1:6 skip 1 with lines lw 2 dt 2 lc rgb '#d62728' title 'threshold F l1', \
+     ''                   using 1:6 skip 1 with lines lw 2 dt 2 lc rgb '#d62728' title 'threshold θ = F l1', \
      ''                   using 1:4 skip 1 with lines lw 2 lc rgb '#2ca02c' title 'tangential traction |l2|', \
      ''                   using 1:($7 == 2 ? $4 : 1/0) skip 1 with points pt 7 ps 0.6 lc rgb '#2ca02c' title 'slip nodes'
 
-# Part 1: the threshold iteration's convergence against the Uzawa steps it
+# The threshold iteration's convergence against the Uzawa steps it
 # costs, on the first mesh (cold start).
 set output 'threshold_history.svg'
-set title 'Part 1: the threshold iteration on the first mesh'
+set title 'The threshold iteration on the first mesh'
 set xlabel 'Uzawa steps so far'
-set ylabel 'd(g) = |g_{new} - g| / |g_{new}|'
+set ylabel 'd(θ) = |θ_{new} - θ| / |θ_{new}|'
 set logscale y
 set format y '10^{%L}'
 set xrange [0:*]
@@ -35,23 +35,3 @@ plot 'output/threshold_history.csv' using 2:(strcol(1) eq 'nested' ? $3 : 1/0) s
      1e-6 with lines dt 2 lc rgb '#7f7f7f' title 'threshold tolerance'
 unset logscale y
 set format y '%g'
-
-# Part 2: Hertz at nu = 0.3, frictionless against Coulomb F = 0.3.
-set output 'hertz_friction.svg'
-set title 'Part 2: Hertz contact, nu = 0.3'
-set xlabel 'x'
-set ylabel 'traction'
-set xrange [-0.12:0.12]
-set yrange [-20:95]
-set key default
-set key top center horizontal maxrows 3 box opaque
-# Hertz's pressure, a = 0.1, p0 = 2 P / (pi a)
-hertz(x) = abs(x) < 0.1 ? 54.94505494505495 * sqrt(1 - x**2 / 0.01) : 0
-set samples 1001
-plot hertz(x) with lines lw 1 lc rgb '#000000' title 'Hertz', \
-     'output/hertz_nu0.3_F0.csv'   using 1:2 skip 1 with lines lw 2 dt 2 lc rgb '#7f7f7f' title 'l1, frictionless', \
-     'output/hertz_nu0.3_F0.3.csv' using 1:2 skip 1 with lines lw 2 lc rgb '#1f77b4' title 'l1, F = 0.3', \
-     ''                            using 1:6 skip 1 with lines lw 1 dt 3 lc rgb '#d62728' title '±F l1', \
-     ''                            using 1:(-$6) skip 1 with lines lw 1 dt 3 lc rgb '#d62728' notitle, \
-     ''                            using 1:3 skip 1 with lines lw 2 lc rgb '#2ca02c' title 'l2, F = 0.3', \
-     ''                            using 1:($7 == 1 ? $3 : 1/0) skip 1 with points pt 7 ps 0.4 lc rgb '#000000' title 'stick nodes'
