@@ -318,7 +318,7 @@ namespace Step2
   {
     std::string                                  name;
     std::vector<CycleRow>                        cycles;
-    ContactZoneFigures                           zone;
+    ContactZoneRecord                            zone;
     double                                       normal_load = 0.;
     double                                       time        = 0.;
     std::vector<NodeValues>                      nodes;
@@ -348,10 +348,10 @@ namespace Step2
       {
         if (cycle > 0)
           problem.refine_mesh();
-        const MeshFigures     mesh     = problem.setup_system(cycle);
-        const TransferFigures transfer = problem.transfer_fields();
+        const MeshRecord     mesh     = problem.setup_system(cycle);
+        const TransferRecord transfer = problem.transfer_fields();
         problem.assemble_system();
-        const SolveFigures prepared = problem.prepare_contact_solve();
+        const SolveRecord prepared = problem.prepare_contact_solve();
         pcout << "  cycle " << cycle << ": " << mesh.n_cells << " cells, "
               << mesh.n_dofs << " DoFs, " << prepared.n_contact_nodes
               << " contact nodes\n";
@@ -655,7 +655,7 @@ end
     unsigned int counts[3] = {0, 0, 0};
     for (const NodeValues &n : merged.nodes)
       ++counts[n.status];
-    const ContactZoneFigures &zone = merged.zone;
+    const ContactZoneRecord &zone = merged.zone;
     pcout << std::setprecision(7) << "\n  finest mesh: normal force "
           << zone.contact_force << " (net normal load " << merged.normal_load
           << "), tangential force " << zone.tangential_force
