@@ -307,8 +307,9 @@ namespace dualcontact
     void
     ContactErrors<dim>::format_summary(ConvergenceTable &table) const
     {
-      // a rate for the pressure's L2 error; the half-width and the peak
-      // pressure converge irregularly, their rates would mislead
+      // a rate for the pressure's L2 error only: the errors of a and p0 are
+      // signed and change sign, where a log rate means nothing; c err keeps
+      // the table's default format
       const ExactSolutionParameters &exact = this->parameters.exact;
       const std::vector<std::pair<std::string, bool>> keys = {
         {"p L2 err", this->scene.exact_pressure() != nullptr},
