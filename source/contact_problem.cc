@@ -73,7 +73,7 @@ namespace dualcontact
 
   // The algorithm: on each mesh of a nested sequence, set up, carry the
   // previous mesh's fields over, assemble, solve, measure, write; then
-  // refine. Each phase times itself and returns its figures; the report
+  // refine. Each phase times itself and returns its record; the report
   // prints them and writes the tables.
   template <int dim>
   void
@@ -146,7 +146,7 @@ namespace dualcontact
   }
 
   template <int dim>
-  MeshFigures
+  MeshRecord
   ContactProblem<dim>::setup_system(const unsigned int cycle)
   {
     TimerOutput::Scope t(computing_timer, "setup system");
@@ -218,13 +218,13 @@ namespace dualcontact
   }
 
   template <int dim>
-  TransferFigures
+  TransferRecord
   ContactProblem<dim>::transfer_fields()
   {
-    TransferFigures figures;
+    TransferRecord record;
     carried = false;
     if (!transfer)
-      return figures;
+      return record;
     TimerOutput::Scope t(computing_timer, "refine mesh");
     carried_v.reinit(locally_owned_dofs, mpi_communicator);
     std::vector<TrilinosWrappers::MPI::Vector *> fields = {&carried_v};
@@ -238,8 +238,8 @@ namespace dualcontact
     transfer->interpolate(fields);
     transfer.reset();
     constraints.distribute(carried_v);
-    carried            = true;
-    figures.warm_start = true;
+    carried           = true;
+    record.warm_start = true;
     if (scene.effects().contact)
       {
         // the multipliers onto the contact nodes, projected onto the
@@ -250,14 +250,14 @@ namespace dualcontact
                                        std::numeric_limits<double>::min());
         const double g_max  = std::max(carried_threshold.linfty_norm(),
                                       std::numeric_limits<double>::min());
-        figures.carried_min_l1 =
+        record.carried_min_l1 =
           Utilities::MPI::min(smallest_l1, mpi_communicator) / l1_max;
         // without friction there is no l2 and no excess
         if (contact_set.friction)
-          figures.carried_max_excess =
+          record.carried_max_excess =
             Utilities::MPI::max(excess, mpi_communicator) / g_max;
       }
-    return figures;
+    return record;
   }
 
   template <int dim>
@@ -304,13 +304,13 @@ namespace dualcontact
   }
 
   template <int dim>
-  SolveFigures
+  SolveRecord
   ContactProblem<dim>::solve()
   {
     TimerOutput::Scope t(computing_timer, "solve");
     indicator_valid = false; // a new solution
     TrilinosWrappers::MPI::Vector v(locally_owned_dofs, mpi_communicator);
-    SolveFigures                  figures =
+    SolveRecord                   record =
       scene.effects().contact ? solve_contact(v) : solve_linear_elasticity(v);
     solution = v;
     t.stop();
@@ -319,30 +319,30 @@ namespace dualcontact
     if (scene.effects().contact && parameters.solver.time_reference_solve)
       {
         TimerOutput::Scope r(computing_timer, "reference linear solve");
-        figures.time_reference = newton.time_reference_solve(
-          contact_system(), contact_set, v, figures.reference_iterations);
+        record.time_reference = newton.time_reference_solve(
+          contact_system(), contact_set, v, record.reference_iterations);
       }
-    return figures;
+    return record;
   }
 
   template <int dim>
-  SolveFigures
+  SolveRecord
   ContactProblem<dim>::solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v)
   {
-    SolveFigures figures;
+    SolveRecord record;
     if (carried) // nested iteration: the coarse solution is a first guess
       v = carried_v;
     elastic_solver.initialize(system_matrix);
-    figures.cg_iterations = elastic_solver.solve(system_matrix, v, system_rhs);
+    record.cg_iterations = elastic_solver.solve(system_matrix, v, system_rhs);
     constraints.distribute(v);
-    return figures;
+    return record;
   }
 
   template <int dim>
-  SolveFigures
+  SolveRecord
   ContactProblem<dim>::prepare_contact_solve()
   {
-    SolveFigures figures;
+    SolveRecord record;
     held_by_friction_pressure = check_equilibrium();
 
     // r is relative to (lambda + 2 mu) / h_C, so that the Uzawa steps do
@@ -359,21 +359,21 @@ namespace dualcontact
         (dim == 2 ? 1. : 0.25) * parameters.solver.augmentation;
     const double modulus =
       parameters.material.lambda() + 2. * parameters.material.mu();
-    const double h_C          = contact_set.min_face_diameter();
-    r                         = parameters.solver.augmentation * modulus / h_C;
-    r_t                       = r_t_rel * modulus / h_C;
-    figures.r                 = r;
-    figures.r_t               = contact_set.friction ? r_t : 0.;
-    figures.chi               = chi;
-    figures.n_contact_nodes   = contact_set.n_global_nodes();
-    figures.n_hanging_contact = contact_set.n_hanging_nodes();
+    const double h_C         = contact_set.min_face_diameter();
+    r                        = parameters.solver.augmentation * modulus / h_C;
+    r_t                      = r_t_rel * modulus / h_C;
+    record.r                 = r;
+    record.r_t               = contact_set.friction ? r_t : 0.;
+    record.chi               = chi;
+    record.n_contact_nodes   = contact_set.n_global_nodes();
+    record.n_hanging_contact = contact_set.n_hanging_nodes();
     // the applied load toward the obstacle, which the contact force
     // balances when nothing else holds the body in that direction (not
     // b . n: b also holds the lifting of prescribed displacements)
     for (unsigned int c = 0; c < dim; ++c)
-      figures.normal_load += applied_load[c] * contact_set.normal[c];
+      record.normal_load += applied_load[c] * contact_set.normal[c];
     find_free_motions();
-    return figures;
+    return record;
   }
 
   template <int dim>
@@ -406,35 +406,35 @@ namespace dualcontact
   }
 
   template <int dim>
-  SolveFigures
+  SolveRecord
   ContactProblem<dim>::solve_contact(TrilinosWrappers::MPI::Vector &v)
   {
-    SolveFigures figures = prepare_contact_solve();
-    report.start_contact_solve(figures);
+    SolveRecord record = prepare_contact_solve();
+    report.start_contact_solve(record);
 
     // from the previous mesh's solution (nested iteration), or from v = 0
     // with the prescribed boundary values and l1 = l2 = 0
     v = initial_displacement();
-    static_cast<ContactStatistics &>(figures) =
+    static_cast<ContactStatistics &>(record) =
       threshold_iteration.solve(contact_system(),
                                 contact_set,
                                 v,
                                 &report,
                                 held_by_friction_pressure,
                                 carried);
-    return figures;
+    return record;
   }
 
   template <int dim>
-  PositionFigures
+  PositionRecord
   ContactProblem<dim>::check_position()
   {
-    TimerOutput::Scope    t(computing_timer, "postprocess");
-    const PositionFigures figures =
+    TimerOutput::Scope   t(computing_timer, "postprocess");
+    const PositionRecord record =
       check_deformed_position(dof_handler, solution, scene);
-    for (const std::string &warning : figures.warnings)
+    for (const std::string &warning : record.warnings)
       report.warning(warning);
-    return figures;
+    return record;
   }
 
   template <int dim>

@@ -239,7 +239,7 @@ namespace dualcontact
 
   template <int dim>
   void
-  ContactProblem<dim>::check_balance(const ReactionFigures &reactions) const
+  ContactProblem<dim>::check_balance(const ReactionRecord &reactions) const
   {
     // The converged solution balances the loads up to the solver
     // tolerances (1e-14 to 1e-10 on the shipped scenes, doc/theory.md §8);
@@ -275,7 +275,7 @@ namespace dualcontact
   template void
   ContactProblem<3>::check_moment(const LoadBalance &balance) const;
   template void
-  ContactProblem<2>::check_balance(const ReactionFigures &reactions) const;
+  ContactProblem<2>::check_balance(const ReactionRecord &reactions) const;
   template void
-  ContactProblem<3>::check_balance(const ReactionFigures &reactions) const;
+  ContactProblem<3>::check_balance(const ReactionRecord &reactions) const;
 } // namespace dualcontact

@@ -38,11 +38,11 @@
 namespace dualcontact
 {
   template <int dim>
-  ContactZoneFigures
+  ContactZoneRecord
   ContactProblem<dim>::measure_contact_zone() const
   {
     TimerOutput::Scope    t(computing_timer, "measure contact zone");
-    ContactZoneFigures    figures;
+    ContactZoneRecord     record;
     double                force = 0, peak = 0;
     Tensor<1, dim>        on_obstacle;
     std::vector<ZoneNode> local;
@@ -60,18 +60,18 @@ namespace dualcontact
         node.status = contact_set.status(s);
         local.push_back(node);
       }
-    figures.contact_force = Utilities::MPI::sum(force, mpi_communicator);
+    record.contact_force = Utilities::MPI::sum(force, mpi_communicator);
     for (unsigned int c = 0; c < dim; ++c)
       on_obstacle[c] = Utilities::MPI::sum(on_obstacle[c], mpi_communicator);
     // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s),
     // and its part in the tangent plane of Gamma_C's mean direction
     const Tensor<1, dim> resultant = -on_obstacle;
-    figures.tangential_force =
+    record.tangential_force =
       (resultant - (resultant * contact_set.normal) * contact_set.normal)
         .norm();
-    figures.max_pressure = Utilities::MPI::max(peak, mpi_communicator);
+    record.max_pressure = Utilities::MPI::max(peak, mpi_communicator);
     for (unsigned int c = 0; c < dim; ++c)
-      figures.resultant[c] = resultant[c];
+      record.resultant[c] = resultant[c];
 
     // the half-width (2D) or radius (3D) of the zone and of its stick zone
     std::vector<ZoneNode> nodes;
@@ -81,26 +81,26 @@ namespace dualcontact
       contact_zone_shape(nodes,
                          dim - 1,
                          0.25 * contact_set.min_face_diameter());
-    figures.half_width      = shape.width.nodes;
-    figures.edge_half_width = shape.width.extrapolated;
-    figures.area            = shape.area;
-    figures.extent          = shape.extent;
-    figures.mirrored        = shape.mirrored;
+    record.half_width      = shape.width.nodes;
+    record.edge_half_width = shape.width.extrapolated;
+    record.area            = shape.area;
+    record.extent          = shape.extent;
+    record.mirrored        = shape.mirrored;
     if (contact_set.friction)
-      figures.stick_half_width = shape.stick_width;
+      record.stick_half_width = shape.stick_width;
 
     // errors against what the scene knows
     if (const Function<dim> *exact = scene.exact_pressure())
       {
         TrilinosWrappers::MPI::Vector multipliers, threshold;
         multiplier_fields(multipliers, threshold);
-        figures.pressure_error =
+        record.pressure_error =
           compute_pressure_error(mapping,
                                  dof_handler,
                                  multipliers,
                                  scene.ids_with(BoundaryCondition::contact),
                                  *exact);
-        if (!std::isfinite(figures.pressure_error))
+        if (!std::isfinite(record.pressure_error))
           throw InputError("The entry <Exact solution/Contact pressure> is "
                            "not a finite number (NaN or infinity) at some "
                            "point of Gamma_C: '" +
@@ -108,24 +108,24 @@ namespace dualcontact
                            exit_invalid_value);
       }
     if (parameters.exact.contact_half_width > 0.)
-      figures.half_width_error =
-        figures.edge_half_width / parameters.exact.contact_half_width - 1.;
+      record.half_width_error =
+        record.edge_half_width / parameters.exact.contact_half_width - 1.;
     if (parameters.exact.stick_half_width > 0.)
-      figures.stick_half_width_error =
-        figures.stick_half_width / parameters.exact.stick_half_width - 1.;
+      record.stick_half_width_error =
+        record.stick_half_width / parameters.exact.stick_half_width - 1.;
     if (parameters.exact.peak_pressure > 0.)
-      figures.peak_pressure_error =
-        figures.max_pressure / parameters.exact.peak_pressure - 1.;
-    return figures;
+      record.peak_pressure_error =
+        record.max_pressure / parameters.exact.peak_pressure - 1.;
+    return record;
   }
 
   template <int dim>
-  ColdStartFigures
+  ColdStartRecord
   ContactProblem<dim>::compare_with_cold_start()
   {
-    ColdStartFigures figures;
+    ColdStartRecord record;
     if (!carried || !parameters.refinement.compare_cold_start)
-      return figures;
+      return record;
     TimerOutput::Scope t(computing_timer, "cold start (comparison)");
     report.start_cold_start();
     ContactSet<dim> cold_set = contact_set;
@@ -136,9 +136,9 @@ namespace dualcontact
     const ContactStatistics cold = threshold_iteration.solve(
       contact_system(), cold_set, v_cold, nullptr, held_by_friction_pressure);
     report.end_cold_start();
-    figures.uzawa_steps     = cold.uzawa_steps;
-    figures.newton_steps    = cold.newton_steps;
-    figures.threshold_steps = cold.threshold_steps;
+    record.uzawa_steps     = cold.uzawa_steps;
+    record.newton_steps    = cold.newton_steps;
+    record.threshold_steps = cold.threshold_steps;
 
     // in the energy norm a(e, e) = e.(K - chi M)e, blind to the rigid
     // motions that only the proximal term fixes (a semi-coercive scene
@@ -155,8 +155,8 @@ namespace dualcontact
                                              mpi_communicator);
     difference = solution;
     difference -= v_cold;
-    figures.difference_v = relative_change(energy(difference), energy(v_cold));
-    double sums[2]       = {0., 0.};
+    record.difference_v = relative_change(energy(difference), energy(v_cold));
+    double sums[2]      = {0., 0.};
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const double m = contact_set.nodes[s].weight;
@@ -166,34 +166,34 @@ namespace dualcontact
     Utilities::MPI::sum(ArrayView<const double>(sums, 2),
                         mpi_communicator,
                         ArrayView<double>(sums, 2));
-    figures.difference_l1 =
+    record.difference_l1 =
       relative_change(std::sqrt(sums[0]), std::sqrt(sums[1]));
-    return figures;
+    return record;
   }
 
   template <int dim>
-  ReactionFigures
-  ContactProblem<dim>::compute_reactions(const ContactZoneFigures &zone) const
+  ReactionRecord
+  ContactProblem<dim>::compute_reactions(const ContactZoneRecord &zone) const
   {
     TimerOutput::Scope t(computing_timer, "postprocess");
     // one more pass over the cells: only where there are supports
-    ReactionFigures figures;
+    ReactionRecord record;
     if (scene.ids_with(BoundaryCondition::fixed).empty() &&
         scene.ids_with(BoundaryCondition::normal_fixed).empty())
-      figures.applied_load = applied_load;
+      record.applied_load = applied_load;
     else
-      figures = dualcontact::compute_reactions(mapping,
-                                               dof_handler,
-                                               scene,
-                                               constraints,
-                                               hanging_node_constraints,
-                                               solution);
+      record = dualcontact::compute_reactions(mapping,
+                                              dof_handler,
+                                              scene,
+                                              constraints,
+                                              hanging_node_constraints,
+                                              solution);
 
     // Equilibrium of the whole body: contact force, reactions and applied
     // loads sum to zero, up to the solver tolerances.
-    std::array<double, 3> sum   = figures.applied_load;
-    double                scale = std::sqrt(norm_square(figures.applied_load));
-    for (const auto &[id, force] : figures.on_id)
+    std::array<double, 3> sum   = record.applied_load;
+    double                scale = std::sqrt(norm_square(record.applied_load));
+    for (const auto &[id, force] : record.on_id)
       {
         for (unsigned int c = 0; c < dim; ++c)
           sum[c] += force[c];
@@ -201,22 +201,22 @@ namespace dualcontact
       }
     for (unsigned int c = 0; c < dim; ++c)
       sum[c] += zone.resultant[c];
-    scale             = std::max(scale, std::sqrt(norm_square(zone.resultant)));
-    figures.imbalance = scale > 0. ? std::sqrt(norm_square(sum)) / scale : 0.;
-    return figures;
+    scale            = std::max(scale, std::sqrt(norm_square(zone.resultant)));
+    record.imbalance = scale > 0. ? std::sqrt(norm_square(sum)) / scale : 0.;
+    return record;
   }
 
 
-  template ContactZoneFigures
+  template ContactZoneRecord
   ContactProblem<2>::measure_contact_zone() const;
-  template ContactZoneFigures
+  template ContactZoneRecord
   ContactProblem<3>::measure_contact_zone() const;
-  template ColdStartFigures
+  template ColdStartRecord
   ContactProblem<2>::compare_with_cold_start();
-  template ColdStartFigures
+  template ColdStartRecord
   ContactProblem<3>::compare_with_cold_start();
-  template ReactionFigures
-  ContactProblem<2>::compute_reactions(const ContactZoneFigures &zone) const;
-  template ReactionFigures
-  ContactProblem<3>::compute_reactions(const ContactZoneFigures &zone) const;
+  template ReactionRecord
+  ContactProblem<2>::compute_reactions(const ContactZoneRecord &zone) const;
+  template ReactionRecord
+  ContactProblem<3>::compute_reactions(const ContactZoneRecord &zone) const;
 } // namespace dualcontact

@@ -212,7 +212,7 @@ namespace dualcontact
   }
 
   template <int dim>
-  ReactionFigures
+  ReactionRecord
   compute_reactions(const Mapping<dim>              &mapping,
                     const DoFHandler<dim>           &dof_handler,
                     const Scene<dim>                &scene,
@@ -233,7 +233,7 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector residual(dof_handler.locally_owned_dofs(),
                                            comm);
     Vector<double>                u(n_dofs), r(n_dofs);
-    ReactionFigures               figures;
+    ReactionRecord                record;
     std::array<double, 3>         load{};
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -248,7 +248,7 @@ namespace dualcontact
         }
     residual.compress(VectorOperation::add);
     for (unsigned int c = 0; c < dim; ++c)
-      figures.applied_load[c] = Utilities::MPI::sum(load[c], comm);
+      record.applied_load[c] = Utilities::MPI::sum(load[c], comm);
 
     // The reaction of support id along e_c is R . w, w = 1 at the DoFs of
     // component c the support constrains and 0 at the other DoFs that are
@@ -268,7 +268,7 @@ namespace dualcontact
          {BoundaryCondition::fixed, BoundaryCondition::normal_fixed})
       for (const types::boundary_id id : scene.ids_with(condition))
         {
-          std::array<double, 3> &reaction = figures.on_id[id];
+          std::array<double, 3> &reaction = record.on_id[id];
           for (unsigned int c = 0; c < dim; ++c)
             {
               ComponentMask mask(dim, false);
@@ -298,7 +298,7 @@ namespace dualcontact
               reaction[c] = Utilities::MPI::sum(sum, comm);
             }
         }
-    return figures;
+    return record;
   }
 
   template <int dim>
@@ -503,8 +503,8 @@ namespace dualcontact
     return {true, control.last_step()};
   }
 
-#define DUALCONTACT_INSTANTIATE(dim)                                                   \
-  template void            assemble_elasticity<dim>(const Mapping<dim> &,              \
+#define DUALCONTACT_INSTANTIATE(dim)                                                  \
+  template void           assemble_elasticity<dim>(const Mapping<dim> &,              \
                                          const DoFHandler<dim> &,           \
                                          const Scene<dim> &,                \
                                          const AffineConstraints<double> &, \
@@ -512,20 +512,20 @@ namespace dualcontact
                                          TrilinosWrappers::MPI::Vector &,   \
                                          LumpedMass *,                      \
                                          std::array<double, 3> *);          \
-  template ReactionFigures compute_reactions<dim>(                                     \
-    const Mapping<dim> &,                                                              \
-    const DoFHandler<dim> &,                                                           \
-    const Scene<dim> &,                                                                \
-    const AffineConstraints<double> &,                                                 \
-    const AffineConstraints<double> &,                                                 \
-    const TrilinosWrappers::MPI::Vector &);                                            \
-  template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(                  \
-    const Mapping<dim> &,                                                              \
-    const DoFHandler<dim> &,                                                           \
-    const TrilinosWrappers::SparseMatrix &,                                            \
-    const bool,                                                                        \
-    const Point<dim> &,                                                                \
-    const double);                                                                     \
+  template ReactionRecord compute_reactions<dim>(                                     \
+    const Mapping<dim> &,                                                             \
+    const DoFHandler<dim> &,                                                          \
+    const Scene<dim> &,                                                               \
+    const AffineConstraints<double> &,                                                \
+    const AffineConstraints<double> &,                                                \
+    const TrilinosWrappers::MPI::Vector &);                                           \
+  template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(                 \
+    const Mapping<dim> &,                                                             \
+    const DoFHandler<dim> &,                                                          \
+    const TrilinosWrappers::SparseMatrix &,                                           \
+    const bool,                                                                       \
+    const Point<dim> &,                                                               \
+    const double);                                                                    \
   template class ElasticSolver<dim>;
 
   DUALCONTACT_INSTANTIATE(2)

@@ -100,18 +100,18 @@ namespace dualcontact
   }
 
   template <int dim>
-  PositionFigures
+  PositionRecord
   check_deformed_position(const DoFHandler<dim>               &dof_handler,
                           const TrilinosWrappers::MPI::Vector &solution,
                           const Scene<dim>                    &scene)
   {
-    PositionFigures figures;
-    const double    length = scene.characteristic_length();
-    double          max_u = 0., deepest = 0.;
-    double          lowest_contact = std::numeric_limits<double>::max();
-    unsigned int    deepest_id     = 0;
-    const bool      contact        = scene.effects().contact;
-    const auto      on_contact     = [&scene](const types::boundary_id id) {
+    PositionRecord record;
+    const double   length = scene.characteristic_length();
+    double         max_u = 0., deepest = 0.;
+    double         lowest_contact = std::numeric_limits<double>::max();
+    unsigned int   deepest_id     = 0;
+    const bool     contact        = scene.effects().contact;
+    const auto     on_contact     = [&scene](const types::boundary_id id) {
       return scene.parameters.boundary.condition(id) ==
              BoundaryCondition::contact;
     };
@@ -165,77 +165,76 @@ namespace dualcontact
             }
         }
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    figures.max_displacement = Utilities::MPI::max(max_u, comm);
-    figures.min_initial_gap  = Utilities::MPI::min(lowest_contact, comm);
+    record.max_displacement = Utilities::MPI::max(max_u, comm);
+    record.min_initial_gap  = Utilities::MPI::min(lowest_contact, comm);
     // the deepest point and its id, over the ranks
     const double global_deepest = Utilities::MPI::max(deepest, comm);
-    figures.penetration         = global_deepest;
-    figures.penetrating_id =
+    record.penetration          = global_deepest;
+    record.penetrating_id =
       Utilities::MPI::min(deepest == global_deepest && deepest > 0. ?
                             deepest_id :
                             std::numeric_limits<unsigned int>::max(),
                           comm);
 
-    if (contact && figures.penetration > 1e-8 * length)
+    if (contact && record.penetration > 1e-8 * length)
       {
         const std::string text =
-          describe(figures.penetrating_id,
-                   scene.parameters.boundary.condition(
-                     figures.penetrating_id)) +
+          describe(record.penetrating_id,
+                   scene.parameters.boundary.condition(record.penetrating_id)) +
           " passes through the obstacle by " +
-          format_number(figures.penetration) + " (" +
-          plain(100. * figures.penetration / length) +
+          format_number(record.penetration) + " (" +
+          plain(100. * record.penetration / length) +
           " % of the body's size): only boundaries with the condition "
           "'contact' are kept out of it";
-        if (figures.penetration > 1e-3 * length)
+        if (record.penetration > 1e-3 * length)
           throw InputError("The solution is not physical: " + text +
                              ". Give that boundary the condition 'contact' "
                              "(<Boundary conditions/Conditions>), or check "
                              "which face touches the obstacle (" +
                              obstacle_entries(scene) + ").",
                            exit_inconsistent);
-        figures.warnings.push_back(text + " (less than 0.1 % of its size).");
+        record.warnings.push_back(text + " (less than 0.1 % of its size).");
       }
-    if (figures.max_displacement > 0.05 * length)
+    if (record.max_displacement > 0.05 * length)
       {
         std::ostringstream text;
         text << "the displacements reach "
-             << format_number(figures.max_displacement) << ", "
-             << plain(100. * figures.max_displacement / length)
+             << format_number(record.max_displacement) << ", "
+             << plain(100. * record.max_displacement / length)
              << " % of the body's size " << plain(length)
              << ": the model is linear (small displacements and strains), "
                 "so the result is not physical there";
-        if (contact && figures.min_initial_gap > 0.05 * length)
+        if (contact && record.min_initial_gap > 0.05 * length)
           text << "; the contact boundary starts "
-               << plain(figures.min_initial_gap)
+               << plain(record.min_initial_gap)
                << " from the obstacle, and the body moves that far to "
                   "reach it ("
                << obstacle_entries(scene) << ")";
         text << ".";
-        figures.warnings.push_back(text.str());
+        record.warnings.push_back(text.str());
       }
     // gap and normal are taken before deformation: the obstacle's surface
     // must look flat over the distances the body moves
     const double curvature_radius = scene.obstacle()->radius_of_curvature();
-    if (contact && figures.max_displacement > 0.05 * curvature_radius)
-      figures.warnings.push_back(
-        "the displacements reach " + format_number(figures.max_displacement) +
-        ", " + plain(100. * figures.max_displacement / curvature_radius) +
+    if (contact && record.max_displacement > 0.05 * curvature_radius)
+      record.warnings.push_back(
+        "the displacements reach " + format_number(record.max_displacement) +
+        ", " + plain(100. * record.max_displacement / curvature_radius) +
         " % of the obstacle's radius of curvature " + plain(curvature_radius) +
         ": gaps and normals are taken in the initial configuration, which "
         "is accurate only for displacements small against that radius.");
-    return figures;
+    return record;
   }
 
   template void
   check_initial_position<2>(const Triangulation<2> &, const Scene<2> &);
   template void
   check_initial_position<3>(const Triangulation<3> &, const Scene<3> &);
-  template PositionFigures
+  template PositionRecord
   check_deformed_position<2>(const DoFHandler<2> &,
                              const TrilinosWrappers::MPI::Vector &,
                              const Scene<2> &);
-  template PositionFigures
+  template PositionRecord
   check_deformed_position<3>(const DoFHandler<3> &,
                              const TrilinosWrappers::MPI::Vector &,
                              const Scene<3> &);

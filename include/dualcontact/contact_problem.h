@@ -1,6 +1,6 @@
 // The Problem class, in the shape of a deal.II tutorial: run() loops over
 // refinement cycles and calls one function per phase, each timed with
-// TimerOutput; each phase returns its own figures, and the report prints
+// TimerOutput; each phase returns its own record, and the report prints
 // them. The phases are public so that a program (a tutorial step) can call
 // them one by one and replace one, e.g. write the Uzawa loop itself.
 #ifndef dualcontact_contact_problem_h
@@ -26,10 +26,10 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/contact_system.h>
 #include <dualcontact/elasticity.h>
-#include <dualcontact/figures.h>
 #include <dualcontact/newton_solver.h>
 #include <dualcontact/parameters.h>
 #include <dualcontact/probes.h>
+#include <dualcontact/records.h>
 #include <dualcontact/report.h>
 #include <dualcontact/scene.h>
 #include <dualcontact/threshold_iteration.h>
@@ -74,7 +74,7 @@ namespace dualcontact
     make_grid();
 
     /** DoFs, constraints (hanging nodes, Dirichlet, sliders), matrices. */
-    MeshFigures
+    MeshRecord
     setup_system(const unsigned int cycle);
 
     /**
@@ -82,7 +82,7 @@ namespace dualcontact
      * carried across the last refinement onto the new DoFs (nothing on the
      * first mesh, or without <Refinement/Nested iteration>).
      */
-    TransferFigures
+    TransferRecord
     transfer_fields();
 
     /**
@@ -97,7 +97,7 @@ namespace dualcontact
      * iteration around the Uzawa iteration around the Newton iteration, from
      * the carried fields or from zero.
      */
-    SolveFigures
+    SolveRecord
     solve();
 
     /**
@@ -106,18 +106,18 @@ namespace dualcontact
      * writes its own loops calls it, then works on contact_system() and
      * contact().
      */
-    SolveFigures
+    SolveRecord
     prepare_contact_solve();
 
     /** Contact force, peak pressure, width of the zone, pressure errors. */
-    ContactZoneFigures
+    ContactZoneRecord
     measure_contact_zone() const;
 
     /**
      * With <Refinement/Compare with cold start>: the current mesh solved
      * again from v = 0, l1 = l2 = 0, and the difference of the solutions.
      */
-    ColdStartFigures
+    ColdStartRecord
     compare_with_cold_start();
 
     /**
@@ -125,7 +125,7 @@ namespace dualcontact
      * (plausibility.h): stops if a boundary without the contact condition
      * passes through the foundation, warns if displacements are large.
      */
-    PositionFigures
+    PositionRecord
     check_position();
 
     /**
@@ -134,8 +134,8 @@ namespace dualcontact
      * the resultant of the applied loads, and how far the contact force
      * `zone` measured, the reactions and the loads are from balancing.
      */
-    ReactionFigures
-    compute_reactions(const ContactZoneFigures &zone) const;
+    ReactionRecord
+    compute_reactions(const ContactZoneRecord &zone) const;
 
     /** Norms of u and of its error against an exact solution. */
     ErrorNorms
@@ -237,9 +237,9 @@ namespace dualcontact
     }
 
   private:
-    SolveFigures
+    SolveRecord
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
-    SolveFigures
+    SolveRecord
     solve_contact(TrilinosWrappers::MPI::Vector &v);
     /** Throws if no equilibrium can exist; returns N / |Gamma_C| if only
      * friction holds a tangential load (see ThresholdIteration), else 0. */
@@ -252,7 +252,7 @@ namespace dualcontact
     /** Throws (a runtime failure) if the solution does not balance the
      * loads to the solver tolerances. */
     void
-    check_balance(const ReactionFigures &reactions) const;
+    check_balance(const ReactionRecord &reactions) const;
     double
     net_load(const Tensor<1, dim> &direction) const;
     /** The rigid motions that neither the prescribed displacements nor the

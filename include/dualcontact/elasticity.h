@@ -15,8 +15,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <dualcontact/figures.h>
 #include <dualcontact/lumped_mass.h>
+#include <dualcontact/records.h>
 #include <dualcontact/scene.h>
 
 #include <Epetra_MultiVector.h>
@@ -62,7 +62,7 @@ namespace dualcontact
    * ghosted.
    */
   template <int dim>
-  ReactionFigures
+  ReactionRecord
   compute_reactions(const Mapping<dim>              &mapping,
                     const DoFHandler<dim>           &dof_handler,
                     const Scene<dim>                &scene,

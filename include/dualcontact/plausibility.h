@@ -13,7 +13,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <dualcontact/figures.h>
+#include <dualcontact/records.h>
 #include <dualcontact/scene.h>
 
 
@@ -45,7 +45,7 @@ namespace dualcontact
    * `solution` is ghosted.
    */
   template <int dim>
-  PositionFigures
+  PositionRecord
   check_deformed_position(const DoFHandler<dim>               &dof_handler,
                           const TrilinosWrappers::MPI::Vector &solution,
                           const Scene<dim>                    &scene);

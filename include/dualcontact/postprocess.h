@@ -14,8 +14,8 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <dualcontact/figures.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/records.h>
 
 #include <cmath>
 #include <set>

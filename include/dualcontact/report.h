@@ -1,7 +1,9 @@
 // Everything a run tells: the screen output (rank 0 only), the tables of
 // cycles and iterations, and their CSV files. The Problem class hands it
-// the figures each phase returns; the three loops report their steps to it
-// as an IterationObserver. Nothing else prints.
+// the records each phase returns; the three loops report their steps to it
+// as an IterationObserver. Nothing else prints. A cycle's columns and
+// result lines come from the measured quantities the scene has
+// (report_quantity.h): cycles.csv has their columns and no others.
 //
 // <Output/Verbosity> sets how much of it the screen shows: quiet, the scene
 // and one table row per cycle; normal, also a legend, the Uzawa and
@@ -17,11 +19,13 @@
 #include <deal.II/base/timer.h>
 
 #include <dualcontact/contact_system.h>
-#include <dualcontact/figures.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/records.h>
+#include <dualcontact/report_quantity.h>
 #include <dualcontact/scene.h>
 
 #include <map>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -58,11 +62,11 @@ namespace dualcontact
      * first, the legend.
      */
     void
-    start_cycle(const MeshFigures &mesh, const TransferFigures &transfer);
+    start_cycle(const MeshRecord &mesh, const TransferRecord &transfer);
 
     /** The contact problem about to be solved on this mesh. */
     void
-    start_contact_solve(const SolveFigures &solve);
+    start_contact_solve(const SolveRecord &solve);
 
     /** The comparison run from a cold start begins / ends. */
     void
@@ -89,7 +93,7 @@ namespace dualcontact
 
     /**
      * The cycle is done: fill its times from the timer and the peak memory,
-     * print its figures, add it to the tables and (re)write cycles.csv and
+     * print its results, add it to the tables and (re)write cycles.csv and
      * iterations.csv in the output directory. Returns the completed record.
      */
     const CycleResult &
@@ -141,13 +145,6 @@ namespace dualcontact
     print_cycle(const CycleResult &result) const;
 
     void
-    print_contact_results(const CycleResult &result) const;
-
-    void
-    print_reactions(const ReactionFigures    &reactions,
-                    const ContactZoneFigures &zone) const;
-
-    void
     add_table_rows(const CycleResult &result);
 
     void
@@ -169,9 +166,12 @@ namespace dualcontact
 
     std::vector<CycleResult>     cycle_results;
     std::vector<IterationRecord> iteration_log;
-    CsvTable                     cycle_table;   // every figure: cycles.csv
-    ConvergenceTable             screen_table;  // the summary on screen
-    std::vector<std::string>     error_columns; // of screen_table
+    // the quantities the scene has: their columns and lines
+    std::vector<std::unique_ptr<ReportQuantity<dim>>> quantities;
+
+    CsvTable         cycle_table;  // every quantity's columns: cycles.csv
+    ConvergenceTable screen_table; // the summary on screen
+    bool             summary_has_errors = false; // errors in screen_table
   };
 } // namespace dualcontact
 

@@ -93,7 +93,7 @@ TEST_CASE("A foundation far from the body gives a rigid shift, warned about",
   // only the contact holds the block: it moves 10 down to reach y = -10
   const Run run(
     "", block("0: normal fixed, 2: contact, 3: traction", "0, -10", "0, 1"));
-  const PositionFigures &p = run.last().position;
+  const PositionRecord &p = run.last().position;
   CHECK(std::abs(p.max_displacement - 10.) <= 0.1);
   CHECK(p.min_initial_gap == Approx(10.));
   REQUIRE(p.warnings.size() == 1);
@@ -107,11 +107,11 @@ TEST_CASE("The shipped scenes pass the plausibility checks", "[plausibility]")
        {"hertz.prm", "paper_block.prm", "patch.prm", "sliding_block.prm"})
     {
       INFO(scene);
-      const Run              run(scene,
+      const Run             run(scene,
                     "subsection Refinement\n"
-                                 "  set Number of cycles = 1\n"
-                                 "end\n");
-      const PositionFigures &p = run.last().position;
+                                "  set Number of cycles = 1\n"
+                                "end\n");
+      const PositionRecord &p = run.last().position;
       CHECK(p.warnings.empty());
       CHECK(p.penetration <= 1e-10);
       CHECK(p.min_initial_gap >= 0.);

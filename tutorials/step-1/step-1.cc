@@ -108,7 +108,7 @@ namespace Step1
     double                     r_rel = 0., r = 0., load = 0.;
     unsigned int               uzawa_steps = 0, newton_steps = 0, cg = 0;
     std::vector<double>        change_l1;
-    ContactZoneFigures         zone;
+    ContactZoneRecord          zone;
     std::vector<NodalPressure> pressure;
     double                     time = 0.;
   };
@@ -235,7 +235,7 @@ namespace Step1
     problem.make_grid();
     if (verbose)
       problem.get_report().print_scene();
-    const MeshFigures mesh = problem.setup_system(0);
+    const MeshRecord mesh = problem.setup_system(0);
     problem.transfer_fields();
     problem.assemble_system();
 
@@ -243,8 +243,8 @@ namespace Step1
     // smallest face on Gamma_C, and checks that the load pushes the disc
     // onto the plane (else no equilibrium exists, doc/theory.md §8). The
     // proximal weight was fixed by the assembly: chi = chi_rel E / R^2.
-    const SolveFigures constants = problem.prepare_contact_solve();
-    ContactSolve       result;
+    const SolveRecord constants = problem.prepare_contact_solve();
+    ContactSolve      result;
     result.r_rel = parameters.solver.augmentation;
     result.r     = constants.r;
     result.load  = constants.normal_load;

@@ -531,10 +531,10 @@ namespace Step2
     ContactProblem<dim> problem(parameters, comm, std::cout);
     problem.make_grid();
     problem.get_report().print_scene();
-    const MeshFigures mesh = problem.setup_system(0);
+    const MeshRecord mesh = problem.setup_system(0);
     problem.transfer_fields();
     problem.assemble_system();
-    const SolveFigures constants = problem.prepare_contact_solve();
+    const SolveRecord constants = problem.prepare_contact_solve();
     pcout << "Mesh: " << mesh.n_cells << " cells, " << mesh.n_dofs << " DoFs, "
           << constants.n_contact_nodes
           << " contact nodes; r = " << format("%.6g", constants.r)

@@ -438,7 +438,7 @@ namespace Step3
   {
     std::string                                  name;
     std::vector<CycleRow>                        cycles;
-    ContactZoneFigures                           zone;
+    ContactZoneRecord                           zone;
     double                                       normal_load = 0.;
     double                                       time        = 0.;
     std::vector<NodeValues>                      nodes;
@@ -471,10 +471,10 @@ namespace Step3
       {
         if (cycle > 0)
           problem.refine_mesh();
-        const MeshFigures     mesh     = problem.setup_system(cycle);
-        const TransferFigures transfer = problem.transfer_fields();
+        const MeshRecord     mesh     = problem.setup_system(cycle);
+        const TransferRecord transfer = problem.transfer_fields();
         problem.assemble_system();
-        const SolveFigures prepared = problem.prepare_contact_solve();
+        const SolveRecord prepared = problem.prepare_contact_solve();
         pcout << (cycle > 0 && strategy == FrictionStrategy::nested ? "\n" : "")
               << "  cycle " << cycle << ": " << mesh.n_cells << " cells, "
               << mesh.n_dofs << " DoFs, " << prepared.n_contact_nodes
@@ -662,7 +662,7 @@ namespace Step3
     unsigned int counts[3] = {0, 0, 0};
     for (const NodeValues &n : merged.nodes)
       ++counts[n.status];
-    const ContactZoneFigures &zone = merged.zone;
+    const ContactZoneRecord &zone = merged.zone;
     pcout << "\nThe finest mesh: normal force "
           << format("%.6f", zone.contact_force) << " (net normal load "
           << format("%.6f", merged.normal_load) << "), tangential force "

@@ -119,17 +119,17 @@ namespace Step5
   // file is read, so `set Strategy = edge` works in any scene this program
   // reads.
   void
-  declare_edge_parameters(ParameterHandler &prm)
+  declare_edge_parameters(EntryDeclarer &declarer)
   {
-    prm.enter_subsection("Refinement");
-    prm.declare_entry(
+    declarer.enter_subsection("Refinement");
+    declarer.declare_entry(
       "Edge indicator weight",
       "1",
-      Patterns::Double(0.),
+      EntryPattern::number(0.),
       "'edge' (step-5): the weight w of the edge term, |F|/E mean(l1) "
       "mean(gap) on the faces of Gamma_C that contain an edge of the "
       "contact zone, against Kelly's indicator [-]; 0 gives 'kelly'.");
-    prm.leave_subsection();
+    declarer.leave_subsection();
   }
 
   const bool edge_registered = register_refinement_indicator(
@@ -171,7 +171,7 @@ namespace Step5
   //
   // Hertz's a and p0 depend on E, nu, R and the load P. The first three are
   // the scene's; P is measured: the load vector of the coarse mesh, taken
-  // toward the obstacle (SolveFigures::normal_load), which is what the
+  // toward the obstacle (SolveRecord::normal_load), which is what the
   // contact force must balance. The closed form then becomes the scene's
   // <Exact solution>, against which the library measures the errors of
   // every cycle.

@@ -121,8 +121,8 @@ namespace Step7
   };
 
   // The loads the plane carries: the force of the plane on the ball
-  // (cycles.csv: contact_resultant_*), reversed, is what the ball pushes the
-  // plane with; its z component is -P, its x component Q.
+  // (r.zone.resultant), reversed, is what the ball pushes the plane with;
+  // its z component is -P, its x component Q.
   std::pair<double, double>
   loads(const CycleResult &r)
   {

@@ -1,7 +1,7 @@
-// The figures each phase of a refinement cycle returns, and the record of a
+// The records each phase of a refinement cycle returns, and the record of a
 // whole cycle that the report turns into screen output, tables and CSV.
-#ifndef dualcontact_figures_h
-#define dualcontact_figures_h
+#ifndef dualcontact_records_h
+#define dualcontact_records_h
 
 #include <deal.II/base/types.h>
 
@@ -17,7 +17,7 @@ namespace dualcontact
   using namespace dealii;
 
   /** setup_system(): the mesh of this cycle. */
-  struct MeshFigures
+  struct MeshRecord
   {
     unsigned int             cycle   = 0;
     types::global_cell_index n_cells = 0;
@@ -30,7 +30,7 @@ namespace dualcontact
    * admissible set: the smallest l1 and the largest |l2| - g, relative to
    * the largest multiplier and the largest g (doc/theory.md §7).
    */
-  struct TransferFigures
+  struct TransferRecord
   {
     bool   warm_start         = false;
     double carried_min_l1     = 0.;
@@ -41,7 +41,7 @@ namespace dualcontact
    * solve(): the loops' totals (for linear elasticity alone: the CG
    * iterations), and the constants of the contact problem.
    */
-  struct SolveFigures : ContactStatistics
+  struct SolveRecord : ContactStatistics
   {
     types::global_dof_index n_contact_nodes   = 0;
     types::global_dof_index n_hanging_contact = 0;  // on Gamma_C, all ranks
@@ -57,7 +57,7 @@ namespace dualcontact
   };
 
   /** measure_contact_zone(): the contact zone at convergence. */
-  struct ContactZoneFigures
+  struct ContactZoneRecord
   {
     double contact_force = 0.; // sum_s m_s l1_s
     // the force of the foundation on the body, a vector
@@ -87,7 +87,7 @@ namespace dualcontact
   };
 
   /** compare_with_cold_start(): the same mesh solved from zero. */
-  struct ColdStartFigures
+  struct ColdStartRecord
   {
     unsigned int uzawa_steps     = 0;
     unsigned int newton_steps    = 0;
@@ -119,7 +119,7 @@ namespace dualcontact
    * thickness in 2D]. In equilibrium the reactions, the contact force and
    * the loads add up to zero.
    */
-  struct ReactionFigures
+  struct ReactionRecord
   {
     std::map<types::boundary_id, std::array<double, 3>> on_id;
     std::array<double, 3>                               applied_load{};
@@ -129,7 +129,7 @@ namespace dualcontact
   };
 
   /** What check_deformed_position() (plausibility.h) found. */
-  struct PositionFigures
+  struct PositionRecord
   {
     double max_displacement = 0.; // max |u| over the vertices
     // the deepest point of a boundary without the contact condition below
@@ -157,16 +157,16 @@ namespace dualcontact
   /** One refinement cycle: one row of the cycle table. */
   struct CycleResult
   {
-    MeshFigures        mesh;
-    TransferFigures    transfer;
-    SolveFigures       solve;
-    ContactZoneFigures zone;
-    ColdStartFigures   cold;
-    ErrorNorms         errors;
-    ReactionFigures    reactions;
-    PositionFigures    position;
-    PhaseTimes         time;
-    double             memory_mb = 0.; // peak resident memory, all ranks
+    MeshRecord        mesh;
+    TransferRecord    transfer;
+    SolveRecord       solve;
+    ContactZoneRecord zone;
+    ColdStartRecord   cold;
+    ErrorNorms        errors;
+    ReactionRecord    reactions;
+    PositionRecord    position;
+    PhaseTimes        time;
+    double            memory_mb = 0.; // peak resident memory, all ranks
   };
 } // namespace dualcontact
 

@@ -1,0 +1,150 @@
+// What a run measures, one quantity at a time: the mesh, the loops' counts,
+// the contact zone, friction, the errors against an exact solution, the
+// reactions, the wall times... Each quantity says whether a scene has it
+// (frictionless scenes have no tangential columns, 2D scenes no contact
+// area), and adds its own columns to cycles.csv, to the summary table and
+// to the row a quiet run prints per cycle, and its own lines to a cycle's
+// results. The report iterates over the list of the scene's quantities
+// (report_quantities(), in source/report/quantities.cc): adding a quantity
+// is one class and one line in that list. README.md, "Reading the output",
+// says which quantity writes which columns.
+#ifndef dualcontact_report_quantity_h
+#define dualcontact_report_quantity_h
+
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/table_handler.h>
+
+#include <dualcontact/parameters.h>
+#include <dualcontact/records.h>
+#include <dualcontact/scene.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * The entries the quantities give one table for one cycle, each with its
+   * place: the table's columns follow their places (ascending; entries of
+   * one place keep the order they were added in). The places of a table
+   * are spaced by 10 in the order of its columns, so that a new quantity
+   * can put its columns between two others.
+   */
+  class TableEntries
+  {
+  public:
+    using Value = std::variant<unsigned int, std::uint64_t, double>;
+
+    void
+    add(const unsigned int place, const std::string &key, const Value &value);
+
+    /** An error against an exact solution (the summary's legend says so). */
+    void
+    add_error(const unsigned int place, const std::string &key, double error);
+
+    bool
+    has_errors() const;
+
+    /** One row of `table`, the entries in the order of their places. */
+    void
+    write_to(TableHandler &table) const;
+
+  private:
+    struct Entry
+    {
+      unsigned int place;
+      std::string  key;
+      Value        value;
+      bool         error;
+    };
+    std::vector<Entry> entries;
+  };
+
+  /** Lines of text, each with its place, told in the order of their places. */
+  class ScreenLines
+  {
+  public:
+    /** `text`: one or more lines, each ending in '\n'. */
+    void
+    add(const unsigned int place, const std::string &text);
+
+    std::string
+    text() const;
+
+  private:
+    std::vector<std::pair<unsigned int, std::string>> lines;
+  };
+
+  /**
+   * A column of the row a quiet run prints per cycle: its place, its title
+   * and width, and its entry. While the row is wider than a screen line,
+   * the columns of the largest `priority` are left out (0: always shown).
+   */
+  struct RowColumn
+  {
+    unsigned int                                    place;
+    unsigned int                                    priority;
+    std::string                                     title;
+    std::size_t                                     width;
+    std::function<std::string(const CycleResult &)> entry;
+  };
+
+  /**
+   * One measured quantity. A class derived from it has a static
+   * `has(parameters, scene)`: whether the scene has the quantity (the list
+   * holds only those); its functions then add what it measures.
+   */
+  template <int dim>
+  class ReportQuantity
+  {
+  public:
+    ReportQuantity(const Parameters &parameters, const Scene<dim> &scene)
+        : parameters(parameters)
+        , scene(scene)
+    {}
+
+    virtual ~ReportQuantity() = default;
+
+    /** Its columns of cycles.csv. */
+    virtual void
+    csv_entries(const CycleResult &result, TableEntries &csv) const = 0;
+
+    /** Its columns of the summary table at the end of the run. */
+    virtual void
+    summary_entries(const CycleResult & /*result*/,
+                    TableEntries & /*summary*/) const
+    {}
+
+    /** The number format of its summary columns, and their rates. */
+    virtual void
+    format_summary(ConvergenceTable & /*table*/) const
+    {}
+
+    /** Its columns of the row a quiet run prints per cycle. */
+    virtual void
+    row_columns(std::vector<RowColumn> & /*columns*/) const
+    {}
+
+    /** Its lines of a cycle's results (verbosity normal and detailed). */
+    virtual void
+    print(const CycleResult & /*result*/, ScreenLines & /*lines*/) const
+    {}
+
+  protected:
+    const Parameters &parameters;
+    const Scene<dim> &scene;
+  };
+
+  /** The quantities the scene has, in the order the report asks them. */
+  template <int dim>
+  std::vector<std::unique_ptr<ReportQuantity<dim>>>
+  report_quantities(const Parameters &parameters, const Scene<dim> &scene);
+} // namespace dualcontact
+
+#endif
