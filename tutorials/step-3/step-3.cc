@@ -438,7 +438,7 @@ namespace Step3
   {
     std::string                                  name;
     std::vector<CycleRow>                        cycles;
-    ContactZoneRecord                           zone;
+    ContactZoneRecord                            zone;
     double                                       normal_load = 0.;
     double                                       time        = 0.;
     std::vector<NodeValues>                      nodes;
