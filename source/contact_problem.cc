@@ -446,7 +446,7 @@ namespace dualcontact
                                                  dof_handler,
                                                  solution,
                                                  scene.exact_displacement());
-    if (!std::isfinite(norms.l2) || !std::isfinite(norms.h1_semi))
+    if (!std::isfinite(norms.error_L2) || !std::isfinite(norms.error_H1_semi))
       throw InputError("The entry <Exact solution/Displacement> is not a "
                        "finite number (NaN or infinity) at some point of "
                        "the body: '" +

@@ -430,7 +430,7 @@ namespace dualcontact
         record.n_active = Utilities::MPI::sum(n_active, comm);
 
         // Stop when the gradient is below the envelope and has fallen by the
-        // inner tolerance factor within this Uzawa step (each step is then
+        // Newton gradient reduction within this Uzawa step (each step is then
         // solved as accurately as the Uzawa iteration can use, and no more),
         // or when it is below the final tolerance (doc/theory.md §6).
         const double gradient_norm = gradient.l2_norm();
@@ -438,7 +438,7 @@ namespace dualcontact
           target = std::max(
             {final_tolerance * reference,
              std::min(envelope * reference,
-                      parameters.inner_tolerance_factor * gradient_norm),
+                      parameters.newton_gradient_reduction * gradient_norm),
              1.5 * roundoff_floor * reference});
         // With the node statuses fixed M_k is quadratic (in 3D only without
         // slipping nodes: the projection onto the disc), and a full Newton

@@ -87,11 +87,11 @@ namespace dualcontact
     };
 
     ErrorNorms norms;
-    norms.u_l2 = norm(zero, VectorTools::L2_norm);
+    norms.norm_L2 = norm(zero, VectorTools::L2_norm);
     if (exact != nullptr)
       {
-        norms.l2      = norm(*exact, VectorTools::L2_norm);
-        norms.h1_semi = norm(*exact, VectorTools::H1_seminorm);
+        norms.error_L2      = norm(*exact, VectorTools::L2_norm);
+        norms.error_H1_semi = norm(*exact, VectorTools::H1_seminorm);
       }
     return norms;
   }

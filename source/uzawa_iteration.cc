@@ -36,8 +36,8 @@ namespace dualcontact
                            contact,
                            v_previous,
                            v,
-                           inner_envelope(k),
-                           final_inner_tolerance(),
+                           newton_envelope(k),
+                           final_newton_tolerance(),
                            k,
                            observer);
   }
@@ -220,7 +220,7 @@ namespace dualcontact
     // rest of them is what the inner solves leave (doc/theory.md §6), and
     // no further Uzawa step can remove it.
     const std::size_t n = history.size();
-    if (n < 3 || inner_envelope(n) > final_inner_tolerance())
+    if (n < 3 || newton_envelope(n) > final_newton_tolerance())
       return false;
     const IterationRecord &last = history[n - 1], &before = history[n - 2];
     const double           tolerance = parameters.uzawa_tolerance;
@@ -256,18 +256,18 @@ namespace dualcontact
 
   template <int dim>
   double
-  UzawaIteration<dim>::final_inner_tolerance() const
+  UzawaIteration<dim>::final_newton_tolerance() const
   {
     return parameters.newton_tolerance_factor * parameters.uzawa_tolerance;
   }
 
   template <int dim>
   double
-  UzawaIteration<dim>::inner_envelope(const unsigned int k) const
+  UzawaIteration<dim>::newton_envelope(const unsigned int k) const
   {
-    return std::max(final_inner_tolerance(),
-                    parameters.initial_inner_tolerance *
-                      std::pow(parameters.inner_tolerance_reduction, k - 1.));
+    return std::max(final_newton_tolerance(),
+                    parameters.newton_initial_tolerance *
+                      std::pow(parameters.newton_tolerance_reduction, k - 1.));
   }
 
   template <int dim>

@@ -50,7 +50,7 @@ namespace dualcontact
      *   + sum_s m_s/r psi_g(l2_s + r v_t)
      * over v, from v, with v^k = `v_previous` and the multipliers of
      * `contact`. Stops when |grad M_k| <= max(final_tolerance F_ref,
-     * min(envelope F_ref, inner factor |grad_0|)), grad_0 the gradient at
+     * min(envelope F_ref, gradient reduction |grad_0|)), grad_0 the gradient at
      * the start and F_ref the force scale of doc/theory.md §6 (the smaller
      * of the load and the contact forces), or at the round-off floor of the
      * matrix. Every step is reported

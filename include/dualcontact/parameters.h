@@ -281,14 +281,14 @@ namespace dualcontact
     double       uzawa_tolerance = 1e-8;
     unsigned int max_uzawa_steps = 500;
     // the Newton iteration (semi-smooth, with an exact line search)
-    double       newton_tolerance_factor   = 1e-2;
-    double       initial_inner_tolerance   = 1e-2;
-    double       inner_tolerance_reduction = 0.5;
-    double       inner_tolerance_factor    = 1e-2;
-    unsigned int max_newton_steps          = 50;
-    bool         line_search               = true;
-    double       amg_rebuild_fraction      = 0.05;
-    bool         time_reference_solve      = false;
+    double       newton_tolerance_factor    = 1e-2;
+    double       newton_initial_tolerance   = 1e-2;
+    double       newton_tolerance_reduction = 0.5;
+    double       newton_gradient_reduction  = 1e-2;
+    unsigned int max_newton_steps           = 50;
+    bool         line_search                = true;
+    double       amg_rebuild_fraction       = 0.05;
+    bool         time_reference_solve       = false;
 
     static void
     declare_parameters(EntryDeclarer &declarer);

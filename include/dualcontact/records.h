@@ -100,9 +100,9 @@ namespace dualcontact
   /** postprocess(): norms of the displacement and of its error. */
   struct ErrorNorms
   {
-    double u_l2    = 0.; // ||u||_L2
-    double l2      = 0.; // ||u - u_exact||_L2 (exact known)
-    double h1_semi = 0.; // |u - u_exact|_H1
+    double norm_L2       = 0.; // ||u||_L2
+    double error_L2      = 0.; // ||u - u_exact||_L2 (exact known)
+    double error_H1_semi = 0.; // |u - u_exact|_H1
   };
 
   /** |f|^2 of a force given by its components (unused ones zero). */

@@ -100,9 +100,9 @@ namespace dualcontact
   private:
     /** The Newton tolerance of step k, and the one it shrinks to. */
     double
-    inner_envelope(const unsigned int k) const;
+    newton_envelope(const unsigned int k) const;
     double
-    final_inner_tolerance() const;
+    final_newton_tolerance() const;
 
     /**
      * The last steps of `history` sit at the round-off floor of the inner

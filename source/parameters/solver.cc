@@ -96,22 +96,22 @@ namespace dualcontact
       "The Newton iteration's final tolerance on the relative gradient is this factor "
       "times the Uzawa tolerance [-] (at most 0.01 is advised).");
     declarer.declare_entry(
-      "Initial inner tolerance",
+      "Newton initial tolerance",
       "1e-2",
       EntryPattern::number(0., 1.),
       "The Newton iteration's relative gradient tolerance in the first Uzawa step [-]; it "
       "shrinks geometrically from step to step (summable errors, as the "
       "convergence theorem needs) down to the final tolerance.");
     declarer.declare_entry(
-      "Inner tolerance reduction",
+      "Newton tolerance reduction",
       "0.5",
       EntryPattern::number(0., 1.),
-      "The Newton iteration's tolerance stays below initial tolerance times "
+      "The Newton iteration's tolerance stays below its initial tolerance times "
       "this factor to the power (Uzawa step - 1) [-], in "
       "(0, 1): a geometric envelope that keeps the errors "
       "summable.");
     declarer.declare_entry(
-      "Inner tolerance factor",
+      "Newton gradient reduction",
       "1e-2",
       EntryPattern::number(0., 1.),
       "The Newton iteration stops once its gradient fell by this factor "
@@ -179,17 +179,17 @@ namespace dualcontact
                            value + "'.",
                          exit_invalid_value);
     }
-    proximal                  = prm.get_double("Proximal parameter");
-    uzawa_tolerance           = prm.get_double("Uzawa tolerance");
-    max_uzawa_steps           = prm.get_integer("Maximum Uzawa steps");
-    newton_tolerance_factor   = prm.get_double("Newton tolerance factor");
-    initial_inner_tolerance   = prm.get_double("Initial inner tolerance");
-    inner_tolerance_reduction = prm.get_double("Inner tolerance reduction");
-    inner_tolerance_factor    = prm.get_double("Inner tolerance factor");
-    max_newton_steps          = prm.get_integer("Maximum Newton steps");
-    line_search               = prm.get_bool("Line search");
-    amg_rebuild_fraction      = prm.get_double("AMG rebuild fraction");
-    time_reference_solve      = prm.get_bool("Time a reference linear solve");
+    proximal                   = prm.get_double("Proximal parameter");
+    uzawa_tolerance            = prm.get_double("Uzawa tolerance");
+    max_uzawa_steps            = prm.get_integer("Maximum Uzawa steps");
+    newton_tolerance_factor    = prm.get_double("Newton tolerance factor");
+    newton_initial_tolerance   = prm.get_double("Newton initial tolerance");
+    newton_tolerance_reduction = prm.get_double("Newton tolerance reduction");
+    newton_gradient_reduction  = prm.get_double("Newton gradient reduction");
+    max_newton_steps           = prm.get_integer("Maximum Newton steps");
+    line_search                = prm.get_bool("Line search");
+    amg_rebuild_fraction       = prm.get_double("AMG rebuild fraction");
+    time_reference_solve       = prm.get_bool("Time a reference linear solve");
     prm.leave_subsection();
     if (!(augmentation > 0.))
       throw InputError("The entry <Solver/Augmentation parameter> must be "
@@ -200,8 +200,8 @@ namespace dualcontact
                        "positive (chi = 0 leaves semi-coercive scenes "
                        "singular).",
                        exit_invalid_value);
-    if (!(inner_tolerance_reduction > 0. && inner_tolerance_reduction < 1.))
-      throw InputError("The entry <Solver/Inner tolerance reduction> must lie "
+    if (!(newton_tolerance_reduction > 0. && newton_tolerance_reduction < 1.))
+      throw InputError("The entry <Solver/Newton tolerance reduction> must lie "
                        "in (0, 1).",
                        exit_invalid_value);
   }
@@ -225,9 +225,9 @@ namespace dualcontact
               "Uzawa tolerance",
               "Maximum Uzawa steps",
               "Newton tolerance factor",
-              "Initial inner tolerance",
-              "Inner tolerance reduction",
-              "Inner tolerance factor",
+              "Newton initial tolerance",
+              "Newton tolerance reduction",
+              "Newton gradient reduction",
               "Maximum Newton steps",
               "Line search",
               "AMG rebuild fraction",

@@ -137,11 +137,11 @@ namespace dualcontact
     void
     Displacement<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
     {
-      t.add(350, "u_l2", r.errors.u_l2);
+      t.add(350, "u_l2", r.errors.norm_L2);
       if (this->scene.exact_displacement() != nullptr)
         {
-          t.add(360, "l2_error", r.errors.l2);
-          t.add(370, "h1_error", r.errors.h1_semi);
+          t.add(360, "l2_error", r.errors.error_L2);
+          t.add(370, "h1_error", r.errors.error_H1_semi);
         }
     }
 
@@ -152,8 +152,8 @@ namespace dualcontact
     {
       if (this->scene.exact_displacement() != nullptr)
         {
-          s.add_error(140, "L2 err", r.errors.l2);
-          s.add_error(150, "H1 err", r.errors.h1_semi);
+          s.add_error(140, "L2 err", r.errors.error_L2);
+          s.add_error(150, "H1 err", r.errors.error_H1_semi);
         }
     }
 
@@ -179,15 +179,15 @@ namespace dualcontact
       // without contact, the one figure of the answer
       if (!this->scene.effects().contact)
         c.push_back({180, 1, "||u||_L2", 13, [](const R &r) {
-                       return scientific(r.errors.u_l2, 6);
+                       return scientific(r.errors.norm_L2, 6);
                      }});
       if (this->scene.exact_displacement() != nullptr)
         {
           c.push_back({190, 0, "L2 err", 10, [](const R &r) {
-                         return scientific(r.errors.l2);
+                         return scientific(r.errors.error_L2);
                        }});
           c.push_back({200, 0, "H1 err", 10, [](const R &r) {
-                         return scientific(r.errors.h1_semi);
+                         return scientific(r.errors.error_H1_semi);
                        }});
         }
     }
@@ -197,11 +197,11 @@ namespace dualcontact
     Displacement<dim>::print(const CycleResult &r, ScreenLines &lines) const
     {
       std::vector<std::string> norms = {"||u||_L2 = " +
-                                        scientific(r.errors.u_l2, 6)};
+                                        scientific(r.errors.norm_L2, 6)};
       if (this->scene.exact_displacement() != nullptr)
         {
-          norms.push_back("error L2 = " + scientific(r.errors.l2, 6));
-          norms.push_back("H1 = " + scientific(r.errors.h1_semi, 6));
+          norms.push_back("error L2 = " + scientific(r.errors.error_L2, 6));
+          norms.push_back("H1 = " + scientific(r.errors.error_H1_semi, 6));
         }
       lines.add(140, wrap("   ", norms, ", ", "     "));
     }

@@ -103,7 +103,7 @@ TEST_CASE("3D friction patch: a uniform pressure and shear below F p stick "
   const Run3         run("patch_3d.prm",
                  "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n");
   const CycleResult &r = run.last();
-  CHECK(r.errors.l2 <= 1e-10 * r.errors.u_l2);
+  CHECK(r.errors.error_L2 <= 1e-10 * r.errors.norm_L2);
   CHECK(r.zone.contact_force == Approx(4.).epsilon(1e-10));
   // the plane's force on the body balances the loads (0.8, 0.4, -4)
   CHECK(r.zone.resultant[0] == Approx(-0.8).epsilon(1e-8));

@@ -78,17 +78,19 @@ TEST_CASE("Manufactured solution: Q1 converges with rate 2 in L2 and 1 in H1",
                    std::log(double(r.mesh.n_dofs) / results[k - 1].mesh.n_dofs);
       };
       const double l2_rate =
-        k == 0 ? 0. : rate(results[k - 1].errors.l2, r.errors.l2);
-      const double h1_rate =
-        k == 0 ? 0. : rate(results[k - 1].errors.h1_semi, r.errors.h1_semi);
+        k == 0 ? 0. : rate(results[k - 1].errors.error_L2, r.errors.error_L2);
+      const double h1_rate = k == 0 ? 0. :
+                                      rate(results[k - 1].errors.error_H1_semi,
+                                           r.errors.error_H1_semi);
       INFO("cycle " << k << ": " << r.mesh.n_dofs << " DoFs, L2 error "
-                    << r.errors.l2 << " (rate " << l2_rate << "), H1 error "
-                    << r.errors.h1_semi << " (rate " << h1_rate << ")");
+                    << r.errors.error_L2 << " (rate " << l2_rate
+                    << "), H1 error " << r.errors.error_H1_semi << " (rate "
+                    << h1_rate << ")");
       CHECK(r.mesh.cycle == k);
-      CHECK(r.errors.l2 > 0);
-      CHECK(r.errors.h1_semi > 0);
+      CHECK(r.errors.error_L2 > 0);
+      CHECK(r.errors.error_H1_semi > 0);
       // ||u_exact||_L2 is about 0.75 for this solution
-      CHECK(r.errors.u_l2 == Approx(0.75).epsilon(0.02));
+      CHECK(r.errors.norm_L2 == Approx(0.75).epsilon(0.02));
       if (k >= 1)
         {
           // per DoF, the coarsest pair overstates the order (its DoF
@@ -133,16 +135,16 @@ TEST_CASE("Manufactured solution: every rank alone and all ranks together "
       CHECK(alone[k].mesh.n_dofs == together[k].mesh.n_dofs);
       // the largest difference over the ranks, so all ranks check the same
       const double l2 =
-        Utilities::MPI::max(relative_difference(alone[k].errors.l2,
-                                                together[k].errors.l2),
+        Utilities::MPI::max(relative_difference(alone[k].errors.error_L2,
+                                                together[k].errors.error_L2),
                             MPI_COMM_WORLD);
-      const double h1 =
-        Utilities::MPI::max(relative_difference(alone[k].errors.h1_semi,
-                                                together[k].errors.h1_semi),
-                            MPI_COMM_WORLD);
+      const double h1 = Utilities::MPI::max(
+        relative_difference(alone[k].errors.error_H1_semi,
+                            together[k].errors.error_H1_semi),
+        MPI_COMM_WORLD);
       const double u =
-        Utilities::MPI::max(relative_difference(alone[k].errors.u_l2,
-                                                together[k].errors.u_l2),
+        Utilities::MPI::max(relative_difference(alone[k].errors.norm_L2,
+                                                together[k].errors.norm_L2),
                             MPI_COMM_WORLD);
       INFO("relative differences: L2 error " << l2 << ", H1 error " << h1
                                              << ", ||u||_L2 " << u);

@@ -243,7 +243,7 @@ end
               << ", load " << r.solve.normal_load << ", smallest l1 "
               << c.smallest_l1 << ", penetration " << c.penetration
               << ", complementarity " << c.complementarity);
-    CHECK(std::isfinite(r.errors.u_l2));
+    CHECK(std::isfinite(r.errors.norm_L2));
     CHECK(std::isfinite(max_entry(run.problem->displacement(), run.comm)));
     CHECK(m.finite);
     CHECK(std::abs(r.solve.normal_load - load) <= 1e-10 * load);
@@ -280,17 +280,17 @@ TEST_CASE("Lift-off: a held body pulled away from the foundation touches "
           INFO(name << ", cycle " << k << ": " << a.mesh.n_dofs << " DoFs, "
                     << a.solve.n_contact_nodes << " contact nodes, "
                     << a.solve.uzawa_steps << " Uzawa steps, ||u|| "
-                    << a.errors.u_l2 << " against " << b.errors.u_l2);
+                    << a.errors.norm_L2 << " against " << b.errors.norm_L2);
           CHECK(a.mesh.n_dofs == b.mesh.n_dofs);
           CHECK(a.solve.n_contact_nodes > 0);
           CHECK(a.solve.n_active == 0);
           CHECK(a.zone.contact_force == 0.);
           CHECK(a.zone.max_pressure == 0.);
           CHECK(a.solve.normal_load < 0.); // the net load pulls away
-          CHECK(std::isfinite(a.errors.u_l2));
-          CHECK(b.errors.u_l2 > 0.);
-          CHECK(std::abs(a.errors.u_l2 - b.errors.u_l2) <=
-                1e-8 * b.errors.u_l2);
+          CHECK(std::isfinite(a.errors.norm_L2));
+          CHECK(b.errors.norm_L2 > 0.);
+          CHECK(std::abs(a.errors.norm_L2 - b.errors.norm_L2) <=
+                1e-8 * b.errors.norm_L2);
         }
       const Multipliers m = multipliers(contact);
       const double u_max  = max_entry(free.problem->displacement(), free.comm);
@@ -370,10 +370,11 @@ TEST_CASE("Zero load: zero displacement and multipliers in one Uzawa step",
                         << r.solve.newton_steps << " Newton, "
                         << r.solve.cg_iterations << " CG, "
                         << r.solve.threshold_steps << " threshold steps, ||u|| "
-                        << r.errors.u_l2 << ", force " << r.zone.contact_force);
+                        << r.errors.norm_L2 << ", force "
+                        << r.zone.contact_force);
           CHECK(r.solve.n_contact_nodes > 0);
           CHECK(r.solve.uzawa_steps == 1);
-          CHECK(r.errors.u_l2 == 0.);
+          CHECK(r.errors.norm_L2 == 0.);
           CHECK(r.solve.normal_load == 0.);
           CHECK(r.zone.contact_force == 0.);
           CHECK(r.zone.tangential_force == 0.);
@@ -386,7 +387,7 @@ TEST_CASE("Zero load: zero displacement and multipliers in one Uzawa step",
                       << r.solve.newton_steps << " Newton, "
                       << r.solve.cg_iterations << " CG, "
                       << r.solve.threshold_steps << " threshold, ||u|| "
-                      << r.errors.u_l2 << ", force " << r.zone.contact_force
+                      << r.errors.norm_L2 << ", force " << r.zone.contact_force
                       << '\n';
         }
       INFO("max |u| " << u_max << ", max |l1| " << m.largest_l1 << ", max |l2| "

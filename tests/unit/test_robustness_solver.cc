@@ -89,9 +89,9 @@ namespace
   {
     bool finite = true;
     for (const CycleResult &r : run.problem->results())
-      for (const double x : {r.errors.u_l2,
-                             r.errors.l2,
-                             r.errors.h1_semi,
+      for (const double x : {r.errors.norm_L2,
+                             r.errors.error_L2,
+                             r.errors.error_H1_semi,
                              r.zone.tangential_force,
                              r.solve.rate,
                              r.solve.estimated_l1_error,
@@ -392,8 +392,8 @@ namespace
         CHECK(std::abs(b.zone.tangential_force / (S * L) -
                        a.zone.tangential_force / (u0.stress * u0.length)) <=
               1e-8 * a.zone.contact_force / (u0.stress * u0.length));
-        CHECK(same(b.errors.u_l2 / (L * L),
-                   a.errors.u_l2 / (u0.length * u0.length)));
+        CHECK(same(b.errors.norm_L2 / (L * L),
+                   a.errors.norm_L2 / (u0.length * u0.length)));
         CHECK(same(u_max[k], u_max[0]));
         CHECK(std::abs(b.zone.pressure_error - a.zone.pressure_error) <= 1e-8);
         CHECK(Utilities::MPI::min(n_matched, MPI_COMM_WORLD) ==
