@@ -1,7 +1,6 @@
 #include <dualcontact/friction_law.h>
 #include <dualcontact/registry.h>
 
-#include <stdexcept>
 
 namespace dualcontact
 {
@@ -34,10 +33,8 @@ namespace dualcontact
   std::unique_ptr<FrictionLaw>
   create_friction_law(const std::string &name)
   {
-    const auto *factory = Registry<FrictionLawFactory>::instance().find(name);
-    if (factory == nullptr)
-      throw std::invalid_argument("There is no friction law called <" + name +
-                                  ">.");
-    return (*factory)();
+    return Registry<FrictionLawFactory>::instance().get(name,
+                                                        "friction law",
+                                                        "Friction/Law")();
   }
 } // namespace dualcontact

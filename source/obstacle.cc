@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
-#include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
+#include <dualcontact/parameter_helpers.h>
 #include <dualcontact/registry.h>
 
 #include <algorithm>
@@ -26,12 +26,9 @@ namespace dualcontact
   const ObstacleKind &
   obstacle_kind(const std::string &name)
   {
-    const ObstacleKind *kind = Registry<ObstacleKind>::instance().find(name);
-    if (kind == nullptr)
-      throw InputError("There is no obstacle called '" + name +
-                         "' (<Obstacle/Type>).",
-                       exit_invalid_value);
-    return *kind;
+    return Registry<ObstacleKind>::instance().get(name,
+                                                  "obstacle",
+                                                  "Obstacle/Type");
   }
 
   std::map<std::string, std::vector<std::string>>
@@ -131,13 +128,7 @@ namespace dualcontact
     std::vector<std::string> entries;
     if (kind.entries != nullptr)
       entries = kind.entries(parameters.geometry.dimension);
-    std::string text;
-    for (std::size_t i = 0; i < entries.size(); ++i)
-      text += std::string(i == 0                  ? "" :
-                          i + 1 == entries.size() ? " and " :
-                                                    ", ") +
-              "<" + entries[i] + ">";
-    return text;
+    return listed(entries, "<", ">");
   }
 
   template <int dim>

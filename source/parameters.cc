@@ -76,15 +76,23 @@ namespace dualcontact
   }
 
   std::string
-  quoted_list(const std::vector<std::string> &names)
+  listed(const std::vector<std::string> &names,
+         const std::string              &open,
+         const std::string              &close)
   {
     std::string text;
     for (std::size_t i = 0; i < names.size(); ++i)
       text += std::string(i == 0                ? "" :
                           i + 1 == names.size() ? " and " :
                                                   ", ") +
-              quoted(names[i]);
+              open + names[i] + close;
     return text;
+  }
+
+  std::string
+  quoted_list(const std::vector<std::string> &names)
+  {
+    return listed(names, "'", "'");
   }
 
   bool

@@ -1,4 +1,3 @@
-#include <dualcontact/input_error.h>
 #include <dualcontact/refinement_indicator.h>
 #include <dualcontact/registry.h>
 
@@ -23,13 +22,8 @@ namespace dualcontact
   const RefinementIndicatorKind &
   refinement_indicator_kind(const std::string &name)
   {
-    const RefinementIndicatorKind *kind =
-      Registry<RefinementIndicatorKind>::instance().find(name);
-    if (kind == nullptr)
-      throw InputError("There is no refinement indicator called '" + name +
-                         "' (<Refinement/Strategy>).",
-                       exit_invalid_value);
-    return *kind;
+    return Registry<RefinementIndicatorKind>::instance().get(
+      name, "refinement indicator", "Refinement/Strategy");
   }
 
   template <int dim>

@@ -41,6 +41,12 @@ namespace dualcontact
   std::string
   quoted(const std::string &value);
 
+  /** `open`a`close`, `open`b`close` and `open`c`close`: <a>, <b> and <c> */
+  std::string
+  listed(const std::vector<std::string> &names,
+         const std::string              &open,
+         const std::string              &close);
+
   /** 'a', 'b' and 'c' */
   std::string
   quoted_list(const std::vector<std::string> &names);

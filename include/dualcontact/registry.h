@@ -4,6 +4,8 @@
 #ifndef dualcontact_registry_h
 #define dualcontact_registry_h
 
+#include <dualcontact/input_error.h>
+
 #include <map>
 #include <string>
 #include <utility>
@@ -49,6 +51,23 @@ namespace dualcontact
     {
       const auto it = factories.find(name);
       return it == factories.end() ? nullptr : &it->second;
+    }
+
+    /**
+     * The factory called `name`; InputError (exit 5) otherwise: "There is no
+     * `kind` called 'name' (<entry>)."
+     */
+    const Factory &
+    get(const std::string &name,
+        const std::string &kind,
+        const std::string &entry) const
+    {
+      const Factory *factory = find(name);
+      if (factory == nullptr)
+        throw InputError("There is no " + kind + " called '" + name + "' (<" +
+                           entry + ">).",
+                         exit_invalid_value);
+      return *factory;
     }
 
   private:

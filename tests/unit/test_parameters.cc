@@ -15,6 +15,7 @@
 using namespace dualcontact;
 using dualcontact_test::catch_input_error;
 using dualcontact_test::CaughtError;
+using dualcontact_test::contains;
 
 namespace
 {
@@ -37,11 +38,6 @@ namespace
     });
   }
 
-  bool
-  contains(const std::string &text, const std::string &part)
-  {
-    return text.find(part) != std::string::npos;
-  }
 } // namespace
 
 TEST_CASE("The default parameter file parses back and gives the defaults",

@@ -43,6 +43,13 @@ namespace dualcontact_test
     return caught;
   }
 
+  /** Whether `text` contains `part`. */
+  inline bool
+  contains(const std::string &text, const std::string &part)
+  {
+    return text.find(part) != std::string::npos;
+  }
+
   /** The text of a file (the test inputs under tests/). */
   inline std::string
   read_text(const std::string &filename)

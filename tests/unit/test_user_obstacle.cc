@@ -25,11 +25,6 @@ using namespace dualcontact_test;
 
 namespace
 {
-  bool
-  contains(const std::string &text, const std::string &part)
-  {
-    return text.find(part) != std::string::npos;
-  }
 
   // ---- the kind, as a user writes it
   template <int dim>
