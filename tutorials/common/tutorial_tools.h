@@ -244,6 +244,18 @@ namespace dualcontact
     };
 
     /**
+     * A step's own requirement on its scene (2D only, frictionless...):
+     * InputError with exit status 6 (entries that contradict each other)
+     * and `message` unless `ok`.
+     */
+    inline void
+    require(const bool ok, const std::string &message)
+    {
+      if (!ok)
+        throw InputError(message, exit_inconsistent);
+    }
+
+    /**
      * The main() of a tutorial program: MPI, the parameter file (the
      * first argument that is not an option, `default_file` without one),
      * overrides after it as the dualcontact program takes them

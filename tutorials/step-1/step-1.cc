@@ -584,14 +584,11 @@ main(int argc, char *argv[])
   using namespace dualcontact;
   return tutorial::run_tutorial(
     argc, argv, "step-1", "step-1.prm", [](Parameters &parameters) {
-      if (parameters.geometry.dimension != 2)
-        throw InputError("step-1 compares with plane-strain Hertz: "
-                         "<Geometry/Dimension> must be 2.",
-                         exit_inconsistent);
-      if (parameters.friction.law != "none")
-        throw InputError("step-1 is frictionless: <Friction/Law> must be "
-                         "none.",
-                         exit_inconsistent);
+      tutorial::require(
+        parameters.geometry.dimension == 2,
+        "step-1 compares with plane-strain Hertz: <Geometry/Dimension> must be 2.");
+      tutorial::require(parameters.friction.law == "none",
+                        "step-1 is frictionless: <Friction/Law> must be none.");
       return Step1::run<2>(parameters);
     });
 }

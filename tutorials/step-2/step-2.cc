@@ -655,14 +655,11 @@ main(int argc, char *argv[])
   using namespace dualcontact;
   return tutorial::run_tutorial(
     argc, argv, "step-2", "step-2.prm", [](Parameters &parameters) {
-      if (parameters.geometry.dimension != 2)
-        throw InputError("step-2 runs the 2D half disc: "
-                         "<Geometry/Dimension> must be 2.",
-                         exit_inconsistent);
-      if (parameters.friction.law != "none")
-        throw InputError("step-2 is frictionless: <Friction/Law> must be "
-                         "none.",
-                         exit_inconsistent);
+      tutorial::require(
+        parameters.geometry.dimension == 2,
+        "step-2 runs the 2D half disc: <Geometry/Dimension> must be 2.");
+      tutorial::require(parameters.friction.law == "none",
+                        "step-2 is frictionless: <Friction/Law> must be none.");
       return Step2::run<2>(parameters);
     });
 }

@@ -1,19 +1,6 @@
 #!/bin/bash
-# Regenerate the results of step-4: run the program on 2 MPI ranks (output
-# in ./output, screen output in output/screen.out), draw the figures
-# (hertz_friction.svg, hertz_friction_nu2.svg), and write the screen output
-# that README.md quotes between its <!-- begin output: NAME --> and
-# <!-- end output: NAME --> markers (../readme_output.sh says how; the test
-# tutorial_step-4_readme compares those blocks with expected.out).
-# Run from anywhere; the build is expected in ../../build (the top-level
-# build of the project) unless BUILD names another.
-set -eo pipefail
+# Regenerate the results of step-4: run it on 2 MPI ranks, draw hertz_friction.svg, hertz_friction_nu2.svg
+# and write the output README.md quotes (../make_results.sh says how).
+set -euo pipefail
 cd "$(dirname "$0")"
-BUILD=${BUILD:-../../build}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-mkdir -p output
-mpirun -np 2 "$BUILD/tutorials/step-4" step-4.prm | tee output/screen.out
-gnuplot plot.gp
-bash ../readme_output.sh update README.md output/screen.out
-echo "screen output in output/screen.out, figures hertz_friction.svg," \
-  "hertz_friction_nu2.svg, quoted in README.md"
+bash ../make_results.sh 4 "hertz_friction.svg, hertz_friction_nu2.svg"

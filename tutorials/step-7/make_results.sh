@@ -1,22 +1,6 @@
 #!/bin/bash
-# Regenerate the results of step-7: run it on 2 MPI ranks (screen output in
-# output/step-7.out, the library's in output/screen.log), then draw
-# profile.svg and zones.svg with gnuplot, and write the quoted output of
-# README.md anew (../readme_output.sh).
-# Run from anywhere; the program is ../../build/tutorials/step-7 unless
-# STEP6=<path> says otherwise.
+# Regenerate the results of step-7: run it on 2 MPI ranks, draw profile.svg, zones.svg
+# and write the output README.md quotes (../make_results.sh says how).
 set -euo pipefail
 cd "$(dirname "$0")"
-program=${STEP6:-../../build/tutorials/step-7}
-# Open MPI refuses to run as root unless told
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-
-rm -rf output
-start=$(date +%s.%N)
-nice mpirun -np 2 "$program" step-7.prm | tee step-7.out
-end=$(date +%s.%N)
-mv step-7.out output/
-awk -v s="$start" -v e="$end" 'BEGIN { printf "make_results.sh: step-7 took %.1f s on 2 ranks\n", e - s }'
-gnuplot plot.gp
-bash ../readme_output.sh update README.md output/step-7.out
-echo "make_results.sh: wrote profile.svg, zones.svg and README.md's quoted output"
+bash ../make_results.sh 7 "profile.svg, zones.svg"
