@@ -4,10 +4,36 @@
 // (frictionless scenes have no tangential columns, 2D scenes no contact
 // area), and adds its own columns to cycles.csv, to the summary table and
 // to the row a quiet run prints per cycle, and its own lines to a cycle's
-// results. The report iterates over the list of the scene's quantities
-// (report_quantities(), in source/report/quantities.cc): adding a quantity
-// is one class and one line in that list. README.md, "Reading the output",
-// says which quantity writes which columns.
+// results. README.md, "Reading the output", says which quantity writes
+// which columns.
+//
+// Adding a quantity is one class and its registration line, in any file of
+// the library (source/report/*.cc) or of a program of one's own:
+//
+//   /** Every scene: my_column. */
+//   template <int dim>
+//   class MyQuantity : public ReportQuantity<dim>
+//   {
+//   public:
+//     using ReportQuantity<dim>::ReportQuantity;
+//     void
+//     csv_entries(const CycleResult &r, TableEntries &csv) const override
+//     {
+//       csv.add(610, "my_column", r.memory_mb);
+//     }
+//   };
+//
+//   const bool my_quantity_registered =
+//     register_report_quantity<MyQuantity>("my quantity");
+//
+// The class defines only the functions it needs (`has` too, where not
+// every scene has the quantity). The report asks the quantities in the
+// alphabetical order of their names, and nothing it writes depends on that
+// order: the columns of cycles.csv and of the summary table, the columns of
+// a quiet run's row and the lines of a cycle's results follow their places,
+// and no two quantities of a scene share a place (entries of one place keep
+// the order they were added in, which between two quantities would be the
+// order of their names).
 #ifndef dualcontact_report_quantity_h
 #define dualcontact_report_quantity_h
 
@@ -96,9 +122,10 @@ namespace dualcontact
   };
 
   /**
-   * One measured quantity. A class derived from it has a static
-   * `has(parameters, scene)`: whether the scene has the quantity (the list
-   * holds only those); its functions then add what it measures.
+   * One measured quantity. The static `has(parameters, scene)` says
+   * whether the scene has the quantity (the report asks only those); a
+   * quantity that not every scene has hides it with its own. Its functions
+   * then add what it measures.
    */
   template <int dim>
   class ReportQuantity
@@ -110,6 +137,13 @@ namespace dualcontact
     {}
 
     virtual ~ReportQuantity() = default;
+
+    /** Every scene has it. */
+    static bool
+    has(const Parameters & /*parameters*/, const Scene<dim> & /*scene*/)
+    {
+      return true;
+    }
 
     /** Its columns of cycles.csv. */
     virtual void
@@ -141,7 +175,53 @@ namespace dualcontact
     const Scene<dim> &scene;
   };
 
-  /** The quantities the scene has, in the order the report asks them. */
+  /**
+   * What the registry holds of a quantity for one dimension: whether a
+   * scene has it, and how to make it.
+   */
+  template <int dim>
+  struct ReportQuantityFactory
+  {
+    std::function<bool(const Parameters &, const Scene<dim> &)> has;
+    std::function<std::unique_ptr<ReportQuantity<dim>>(const Parameters &,
+                                                       const Scene<dim> &)>
+      create;
+  };
+
+  /** The factory of the class template `Quantity` in dimension dim. */
+  template <template <int> class Quantity, int dim>
+  ReportQuantityFactory<dim>
+  report_quantity_factory()
+  {
+    return {&Quantity<dim>::has,
+            [](const Parameters &parameters, const Scene<dim> &scene)
+              -> std::unique_ptr<ReportQuantity<dim>> {
+              return std::make_unique<Quantity<dim>>(parameters, scene);
+            }};
+  }
+
+  /** Adds `factory` to the registry of dimension dim, as `name`. */
+  template <int dim>
+  void
+  add_report_quantity(const std::string         &name,
+                      ReportQuantityFactory<dim> factory);
+
+  /**
+   * Makes the class template `Quantity` (derived from ReportQuantity) known
+   * to the report as `name`, in 2D and 3D. Called
+   * once per quantity, at load time, from the quantity's own file. Returns
+   * true (for the static initialiser).
+   */
+  template <template <int> class Quantity>
+  bool
+  register_report_quantity(const std::string &name)
+  {
+    add_report_quantity<2>(name, report_quantity_factory<Quantity, 2>());
+    add_report_quantity<3>(name, report_quantity_factory<Quantity, 3>());
+    return true;
+  }
+
+  /** The quantities the scene has, in the alphabetical order of their names. */
   template <int dim>
   std::vector<std::unique_ptr<ReportQuantity<dim>>>
   report_quantities(const Parameters &parameters, const Scene<dim> &scene);

@@ -13,6 +13,12 @@ namespace dualcontact
     }
 
     std::string
+    count(const std::uint64_t n)
+    {
+      return std::to_string(n);
+    }
+
+    std::string
     scientific(const double x, const int digits)
     {
       std::ostringstream s;

@@ -5,6 +5,7 @@
 #define dualcontact_report_format_h
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -21,6 +22,10 @@ namespace dualcontact
     /** Characters, not bytes: "§" is one. */
     std::size_t
     n_characters(const std::string &text);
+
+    /** A count, as an integer. */
+    std::string
+    count(const std::uint64_t n);
 
     std::string
     scientific(const double x, const int digits = 2);

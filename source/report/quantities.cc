@@ -1,7 +1,11 @@
-// The list of the report's quantities, and the tables' entries they fill.
-#include "quantities.h"
+// The registry of the report's quantities, and the tables' entries they
+// fill. The quantities register themselves from their own files
+// (contact_quantities.cc, run_quantities.cc).
+#include <dualcontact/registry.h>
+#include <dualcontact/report_quantity.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace dualcontact
 {
@@ -64,45 +68,34 @@ namespace dualcontact
     return all;
   }
 
-  namespace
+  template <int dim>
+  void
+  add_report_quantity(const std::string         &name,
+                      ReportQuantityFactory<dim> factory)
   {
-    /** `Quantity` appended to `list` if the scene has it. */
-    template <template <int> class Quantity, int dim>
-    void
-    add_if_present(std::vector<std::unique_ptr<ReportQuantity<dim>>> &list,
-                   const Parameters &parameters,
-                   const Scene<dim> &scene)
-    {
-      if (Quantity<dim>::has(parameters, scene))
-        list.push_back(std::make_unique<Quantity<dim>>(parameters, scene));
-    }
-  } // namespace
+    Registry<ReportQuantityFactory<dim>>::instance().add(name,
+                                                         std::move(factory));
+  }
 
   template <int dim>
   std::vector<std::unique_ptr<ReportQuantity<dim>>>
   report_quantities(const Parameters &parameters, const Scene<dim> &scene)
   {
-    using namespace report_quantities_impl;
+    const auto &registry = Registry<ReportQuantityFactory<dim>>::instance();
     std::vector<std::unique_ptr<ReportQuantity<dim>>> list;
-    add_if_present<MeshSize>(list, parameters, scene);
-    add_if_present<NestedIteration>(list, parameters, scene);
-    add_if_present<ContactSolve>(list, parameters, scene);
-    add_if_present<ContactSolveTimes>(list, parameters, scene);
-    add_if_present<Friction>(list, parameters, scene);
-    add_if_present<ThresholdSteps>(list, parameters, scene);
-    add_if_present<LinearSolves>(list, parameters, scene);
-    add_if_present<ContactErrors>(list, parameters, scene);
-    add_if_present<ContactArea>(list, parameters, scene);
-    add_if_present<ObstacleForce>(list, parameters, scene);
-    add_if_present<Displacement>(list, parameters, scene);
-    add_if_present<ColdStart>(list, parameters, scene);
-    add_if_present<Reactions>(list, parameters, scene);
-    add_if_present<ReferenceSolve>(list, parameters, scene);
-    add_if_present<WallTimes>(list, parameters, scene);
-    add_if_present<Memory>(list, parameters, scene);
+    for (const std::string &name : registry.names())
+      {
+        const ReportQuantityFactory<dim> &factory = *registry.find(name);
+        if (factory.has(parameters, scene))
+          list.push_back(factory.create(parameters, scene));
+      }
     return list;
   }
 
+  template void
+  add_report_quantity(const std::string &, ReportQuantityFactory<2>);
+  template void
+  add_report_quantity(const std::string &, ReportQuantityFactory<3>);
   template std::vector<std::unique_ptr<ReportQuantity<2>>>
   report_quantities(const Parameters &, const Scene<2> &);
   template std::vector<std::unique_ptr<ReportQuantity<3>>>

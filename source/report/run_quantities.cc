@@ -1,422 +1,443 @@
 // The quantities of every run: the mesh, the linear solves, the
 // displacement, the reactions, the wall times and the memory; and those an
 // entry asks for: nested iteration, the comparison with a cold start, the
-// reference solve. Places: report_quantity.h.
+// reference solve. Each class is followed by the line that registers it;
+// places and registration: report_quantity.h.
+#include <dualcontact/report_quantity.h>
+
 #include "format.h"
-#include "quantities.h"
 
 namespace dualcontact
 {
-  namespace report_quantities_impl
+  namespace
   {
     using namespace report_format;
 
-    namespace
+    const char *axes[] = {"x", "y", "z"};
+
+    /** Every scene: cycle, cells, dofs. */
+    template <int dim>
+    class MeshSize : public ReportQuantity<dim>
     {
-      std::string
-      count(const std::uint64_t n)
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
+
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
       {
-        return std::to_string(n);
+        t.add(10, "cycle", r.mesh.cycle);
+        t.add(20, "cells", std::uint64_t(r.mesh.n_cells));
+        t.add(30, "dofs", std::uint64_t(r.mesh.n_dofs));
       }
 
-      const char *axes[] = {"x", "y", "z"};
-    } // namespace
+      void
+      summary_entries(const CycleResult &r, TableEntries &s) const override
+      {
+        s.add(10, "cycle", r.mesh.cycle);
+        s.add(20, "cells", std::uint64_t(r.mesh.n_cells));
+        s.add(30, "DoFs", std::uint64_t(r.mesh.n_dofs));
+      }
 
-    template <int dim>
-    bool
-    MeshSize<dim>::has(const Parameters &, const Scene<dim> &)
-    {
-      return true;
-    }
+      void
+      row_columns(std::vector<RowColumn> &c) const override
+      {
+        using R = CycleResult;
+        c.push_back(
+          {10, 0, "cycle", 6, [](const R &r) { return count(r.mesh.cycle); }});
+        c.push_back({20, 0, "cells", 8, [](const R &r) {
+                       return count(r.mesh.n_cells);
+                     }});
+        c.push_back(
+          {30, 0, "DoFs", 9, [](const R &r) { return count(r.mesh.n_dofs); }});
+      }
+    };
 
-    template <int dim>
-    void
-    MeshSize<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
-    {
-      t.add(10, "cycle", r.mesh.cycle);
-      t.add(20, "cells", std::uint64_t(r.mesh.n_cells));
-      t.add(30, "dofs", std::uint64_t(r.mesh.n_dofs));
-    }
+    const bool mesh_size_registered =
+      register_report_quantity<MeshSize>("mesh");
 
+    /**
+     * <Refinement/Nested iteration>: warm_start, and with contact
+     * carried_min_l1, carried_max_excess.
+     */
     template <int dim>
-    void
-    MeshSize<dim>::summary_entries(const CycleResult &r, TableEntries &s) const
+    class NestedIteration : public ReportQuantity<dim>
     {
-      s.add(10, "cycle", r.mesh.cycle);
-      s.add(20, "cells", std::uint64_t(r.mesh.n_cells));
-      s.add(30, "DoFs", std::uint64_t(r.mesh.n_dofs));
-    }
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
 
-    template <int dim>
-    void
-    MeshSize<dim>::row_columns(std::vector<RowColumn> &c) const
-    {
-      using R = CycleResult;
-      c.push_back(
-        {10, 0, "cycle", 6, [](const R &r) { return count(r.mesh.cycle); }});
-      c.push_back(
-        {20, 0, "cells", 8, [](const R &r) { return count(r.mesh.n_cells); }});
-      c.push_back(
-        {30, 0, "DoFs", 9, [](const R &r) { return count(r.mesh.n_dofs); }});
-    }
+      static bool
+      has(const Parameters &parameters, const Scene<dim> &)
+      {
+        return parameters.refinement.nested_iteration;
+      }
 
-    template <int dim>
-    bool
-    NestedIteration<dim>::has(const Parameters &parameters, const Scene<dim> &)
-    {
-      return parameters.refinement.nested_iteration;
-    }
-
-    template <int dim>
-    void
-    NestedIteration<dim>::csv_entries(const CycleResult &r,
-                                      TableEntries      &t) const
-    {
-      t.add(40, "warm_start", r.transfer.warm_start ? 1u : 0u);
-      // the multipliers carried over, before their projection
-      if (this->scene.effects().contact)
-        {
-          t.add(50, "carried_min_l1", r.transfer.carried_min_l1);
-          t.add(60, "carried_max_excess", r.transfer.carried_max_excess);
-        }
-    }
-
-    template <int dim>
-    bool
-    LinearSolves<dim>::has(const Parameters &, const Scene<dim> &)
-    {
-      return true;
-    }
-
-    template <int dim>
-    void
-    LinearSolves<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
-    {
-      t.add(170, "linear_iterations", r.solve.cg_iterations);
-      t.add(180, "amg_setups", r.solve.amg_setups);
-    }
-
-    template <int dim>
-    void
-    LinearSolves<dim>::summary_entries(const CycleResult &r,
-                                       TableEntries      &s) const
-    {
-      s.add(130, "CG", r.solve.cg_iterations);
-    }
-
-    template <int dim>
-    void
-    LinearSolves<dim>::row_columns(std::vector<RowColumn> &c) const
-    {
-      c.push_back({90, 0, "CG", 6, [](const CycleResult &r) {
-                     return count(r.solve.cg_iterations);
-                   }});
-    }
-
-    template <int dim>
-    void
-    LinearSolves<dim>::print(const CycleResult &r, ScreenLines &lines) const
-    {
-      // with contact, the contact solve's line counts them
-      if (!this->scene.effects().contact)
-        lines.add(
-          10,
-          "   one linear elasticity solve: " + count(r.solve.cg_iterations) +
-            " CG iterations" +
-            seconds(r.time.solve, this->parameters.output.print_timing) + '\n');
-    }
-
-    template <int dim>
-    bool
-    Displacement<dim>::has(const Parameters &, const Scene<dim> &)
-    {
-      return true;
-    }
-
-    template <int dim>
-    void
-    Displacement<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
-    {
-      t.add(350, "u_l2", r.errors.norm_L2);
-      if (this->scene.exact_displacement() != nullptr)
-        {
-          t.add(360, "l2_error", r.errors.error_L2);
-          t.add(370, "h1_error", r.errors.error_H1_semi);
-        }
-    }
-
-    template <int dim>
-    void
-    Displacement<dim>::summary_entries(const CycleResult &r,
-                                       TableEntries      &s) const
-    {
-      if (this->scene.exact_displacement() != nullptr)
-        {
-          s.add_error(140, "L2 err", r.errors.error_L2);
-          s.add_error(150, "H1 err", r.errors.error_H1_semi);
-        }
-    }
-
-    template <int dim>
-    void
-    Displacement<dim>::format_summary(ConvergenceTable &table) const
-    {
-      if (this->scene.exact_displacement() != nullptr)
-        for (const std::string key : {"L2 err", "H1 err"})
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(40, "warm_start", r.transfer.warm_start ? 1u : 0u);
+        // the multipliers carried over, before their projection
+        if (this->scene.effects().contact)
           {
-            table.set_scientific(key, true);
-            table.set_precision(key, 2);
-            table.evaluate_convergence_rates(
-              key, "DoFs", ConvergenceTable::reduction_rate_log2, dim);
+            t.add(50, "carried_min_l1", r.transfer.carried_min_l1);
+            t.add(60, "carried_max_excess", r.transfer.carried_max_excess);
           }
-    }
+      }
+    };
 
+    const bool nested_iteration_registered =
+      register_report_quantity<NestedIteration>("nested iteration");
+
+    /** Every scene: linear_iterations, amg_setups. */
     template <int dim>
-    void
-    Displacement<dim>::row_columns(std::vector<RowColumn> &c) const
+    class LinearSolves : public ReportQuantity<dim>
     {
-      using R = CycleResult;
-      // without contact, the one figure of the answer
-      if (!this->scene.effects().contact)
-        c.push_back({180, 1, "||u||_L2", 13, [](const R &r) {
-                       return scientific(r.errors.norm_L2, 6);
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
+
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(170, "linear_iterations", r.solve.cg_iterations);
+        t.add(180, "amg_setups", r.solve.amg_setups);
+      }
+
+      void
+      summary_entries(const CycleResult &r, TableEntries &s) const override
+      {
+        s.add(130, "CG", r.solve.cg_iterations);
+      }
+
+      void
+      row_columns(std::vector<RowColumn> &c) const override
+      {
+        c.push_back({90, 0, "CG", 6, [](const CycleResult &r) {
+                       return count(r.solve.cg_iterations);
                      }});
-      if (this->scene.exact_displacement() != nullptr)
-        {
-          c.push_back({190, 0, "L2 err", 10, [](const R &r) {
-                         return scientific(r.errors.error_L2);
+      }
+
+      void
+      print(const CycleResult &r, ScreenLines &lines) const override
+      {
+        // with contact, the contact solve's line counts them
+        if (!this->scene.effects().contact)
+          lines.add(10,
+                    "   one linear elasticity solve: " +
+                      count(r.solve.cg_iterations) + " CG iterations" +
+                      seconds(r.time.solve,
+                              this->parameters.output.print_timing) +
+                      '\n');
+      }
+    };
+
+    const bool linear_solves_registered =
+      register_report_quantity<LinearSolves>("linear solves");
+
+    /**
+     * Every scene: u_l2; with <Exact solution/Displacement> also l2_error,
+     * h1_error.
+     */
+    template <int dim>
+    class Displacement : public ReportQuantity<dim>
+    {
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
+
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(350, "u_l2", r.errors.norm_L2);
+        if (this->scene.exact_displacement() != nullptr)
+          {
+            t.add(360, "l2_error", r.errors.error_L2);
+            t.add(370, "h1_error", r.errors.error_H1_semi);
+          }
+      }
+
+      void
+      summary_entries(const CycleResult &r, TableEntries &s) const override
+      {
+        if (this->scene.exact_displacement() != nullptr)
+          {
+            s.add_error(140, "L2 err", r.errors.error_L2);
+            s.add_error(150, "H1 err", r.errors.error_H1_semi);
+          }
+      }
+
+      void
+      format_summary(ConvergenceTable &table) const override
+      {
+        if (this->scene.exact_displacement() != nullptr)
+          for (const std::string key : {"L2 err", "H1 err"})
+            {
+              table.set_scientific(key, true);
+              table.set_precision(key, 2);
+              table.evaluate_convergence_rates(
+                key, "DoFs", ConvergenceTable::reduction_rate_log2, dim);
+            }
+      }
+
+      void
+      row_columns(std::vector<RowColumn> &c) const override
+      {
+        using R = CycleResult;
+        // without contact, the one figure of the answer
+        if (!this->scene.effects().contact)
+          c.push_back({180, 1, "||u||_L2", 13, [](const R &r) {
+                         return scientific(r.errors.norm_L2, 6);
                        }});
-          c.push_back({200, 0, "H1 err", 10, [](const R &r) {
-                         return scientific(r.errors.error_H1_semi);
-                       }});
-        }
-    }
+        if (this->scene.exact_displacement() != nullptr)
+          {
+            c.push_back({190, 0, "L2 err", 10, [](const R &r) {
+                           return scientific(r.errors.error_L2);
+                         }});
+            c.push_back({200, 0, "H1 err", 10, [](const R &r) {
+                           return scientific(r.errors.error_H1_semi);
+                         }});
+          }
+      }
 
-    template <int dim>
-    void
-    Displacement<dim>::print(const CycleResult &r, ScreenLines &lines) const
-    {
-      std::vector<std::string> norms = {"||u||_L2 = " +
-                                        scientific(r.errors.norm_L2, 6)};
-      if (this->scene.exact_displacement() != nullptr)
-        {
-          norms.push_back("error L2 = " + scientific(r.errors.error_L2, 6));
-          norms.push_back("H1 = " + scientific(r.errors.error_H1_semi, 6));
-        }
-      lines.add(140, wrap("   ", norms, ", ", "     "));
-    }
+      void
+      print(const CycleResult &r, ScreenLines &lines) const override
+      {
+        std::vector<std::string> norms = {"||u||_L2 = " +
+                                          scientific(r.errors.norm_L2, 6)};
+        if (this->scene.exact_displacement() != nullptr)
+          {
+            norms.push_back("error L2 = " + scientific(r.errors.error_L2, 6));
+            norms.push_back("H1 = " + scientific(r.errors.error_H1_semi, 6));
+          }
+        lines.add(140, wrap("   ", norms, ", ", "     "));
+      }
+    };
 
-    template <int dim>
-    bool
-    ColdStart<dim>::has(const Parameters &parameters, const Scene<dim> &)
-    {
-      return parameters.refinement.compare_cold_start;
-    }
+    const bool displacement_registered =
+      register_report_quantity<Displacement>("displacement");
 
+    /**
+     * <Refinement/Compare with cold start>: cold_uzawa_steps,
+     * cold_newton_steps, cold_threshold_steps, cold_time_solve,
+     * cold_difference_v, cold_difference_l1.
+     */
     template <int dim>
-    void
-    ColdStart<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
+    class ColdStart : public ReportQuantity<dim>
     {
-      t.add(380, "cold_uzawa_steps", r.cold.uzawa_steps);
-      t.add(390, "cold_newton_steps", r.cold.newton_steps);
-      t.add(400, "cold_threshold_steps", r.cold.threshold_steps);
-      t.add(410, "cold_time_solve", r.cold.time);
-      t.add(420, "cold_difference_v", r.cold.difference_v);
-      t.add(430, "cold_difference_l1", r.cold.difference_l1);
-    }
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
 
-    template <int dim>
-    void
-    ColdStart<dim>::print(const CycleResult &r, ScreenLines &lines) const
-    {
-      if (r.cold.uzawa_steps == 0) // the first mesh, or no contact
-        return;
-      const SolveRecord &solve = r.solve;
-      // "time <t> s vs <t> s": tests/run_regression.cmake masks it
-      lines.add(90,
-                wrap("   nested iteration against a cold start: ",
-                     {"Uzawa " + count(solve.uzawa_steps) + " vs " +
-                        count(r.cold.uzawa_steps),
-                      "Newton " + count(solve.newton_steps) + " vs " +
-                        count(r.cold.newton_steps),
-                      "threshold steps " + count(solve.threshold_steps) +
-                        " vs " + count(r.cold.threshold_steps),
-                      "time " + significant(r.time.solve, 6) + " s vs " +
-                        significant(r.cold.time, 6) + " s"},
-                     ", ",
-                     "     ") +
-                  "   solutions differ by " + significant(r.cold.difference_v) +
-                  " (v, energy norm), " + significant(r.cold.difference_l1) +
-                  " (l1)\n");
-    }
+      static bool
+      has(const Parameters &parameters, const Scene<dim> &)
+      {
+        return parameters.refinement.compare_cold_start;
+      }
 
-    template <int dim>
-    bool
-    Reactions<dim>::has(const Parameters &, const Scene<dim> &)
-    {
-      return true;
-    }
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(380, "cold_uzawa_steps", r.cold.uzawa_steps);
+        t.add(390, "cold_newton_steps", r.cold.newton_steps);
+        t.add(400, "cold_threshold_steps", r.cold.threshold_steps);
+        t.add(410, "cold_time_solve", r.cold.time);
+        t.add(420, "cold_difference_v", r.cold.difference_v);
+        t.add(430, "cold_difference_l1", r.cold.difference_l1);
+      }
 
+      void
+      print(const CycleResult &r, ScreenLines &lines) const override
+      {
+        if (r.cold.uzawa_steps == 0) // the first mesh, or no contact
+          return;
+        const SolveRecord &solve = r.solve;
+        // "time <t> s vs <t> s": tests/run_regression.cmake masks it
+        lines.add(90,
+                  wrap("   nested iteration against a cold start: ",
+                       {"Uzawa " + count(solve.uzawa_steps) + " vs " +
+                          count(r.cold.uzawa_steps),
+                        "Newton " + count(solve.newton_steps) + " vs " +
+                          count(r.cold.newton_steps),
+                        "threshold steps " + count(solve.threshold_steps) +
+                          " vs " + count(r.cold.threshold_steps),
+                        "time " + significant(r.time.solve, 6) + " s vs " +
+                          significant(r.cold.time, 6) + " s"},
+                       ", ",
+                       "     ") +
+                    "   solutions differ by " +
+                    significant(r.cold.difference_v) + " (v, energy norm), " +
+                    significant(r.cold.difference_l1) + " (l1)\n");
+      }
+    };
+
+    const bool cold_start_registered =
+      register_report_quantity<ColdStart>("cold start");
+
+    /**
+     * Every scene: equilibrium_imbalance, applied_load_x, _y (_z), and
+     * reaction_<id>_x, ... for each 'fixed' or 'normal fixed' id.
+     */
     template <int dim>
-    void
-    Reactions<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
+    class Reactions : public ReportQuantity<dim>
     {
-      t.add(220, "equilibrium_imbalance", r.reactions.imbalance);
-      for (unsigned int c = 0; c < dim; ++c)
-        t.add(440,
-              std::string("applied_load_") + axes[c],
-              r.reactions.applied_load[c]);
-      for (const auto &[id, f] : r.reactions.on_id)
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
+
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(220, "equilibrium_imbalance", r.reactions.imbalance);
         for (unsigned int c = 0; c < dim; ++c)
-          t.add(450, "reaction_" + std::to_string(id) + "_" + axes[c], f[c]);
-    }
-
-    template <int dim>
-    void
-    Reactions<dim>::print(const CycleResult &r, ScreenLines &lines) const
-    {
-      // with the contact force they balance
-      if (r.reactions.on_id.empty())
-        return;
-      const auto vector = [](const std::array<double, 3> &f) {
-        std::string s = "(" + significant(f[0]);
-        for (unsigned int c = 1; c < dim; ++c)
-          s += ", " + significant(f[c]);
-        return s + ")";
-      };
-      std::vector<std::string> items;
-      for (const auto &[id, f] : r.reactions.on_id)
-        items.push_back("id " + std::to_string(id) + " " + vector(f));
-      items.push_back("applied loads " + vector(r.reactions.applied_load));
-      if (this->scene.effects().contact)
-        {
-          std::array<double, 3> on_obstacle{};
+          t.add(440,
+                std::string("applied_load_") + axes[c],
+                r.reactions.applied_load[c]);
+        for (const auto &[id, f] : r.reactions.on_id)
           for (unsigned int c = 0; c < dim; ++c)
-            on_obstacle[c] = -r.zone.resultant[c];
-          items.push_back("force on the obstacle " + vector(on_obstacle));
-        }
-      items.push_back("imbalance " + scientific(r.reactions.imbalance, 1) +
-                      " (relative)");
-      lines.add(130, wrap("   reactions on the body: ", items, "; ", "     "));
-    }
+            t.add(450, "reaction_" + std::to_string(id) + "_" + axes[c], f[c]);
+      }
 
+      void
+      print(const CycleResult &r, ScreenLines &lines) const override
+      {
+        // with the contact force they balance
+        if (r.reactions.on_id.empty())
+          return;
+        const auto vector = [](const std::array<double, 3> &f) {
+          std::string s = "(" + significant(f[0]);
+          for (unsigned int c = 1; c < dim; ++c)
+            s += ", " + significant(f[c]);
+          return s + ")";
+        };
+        std::vector<std::string> items;
+        for (const auto &[id, f] : r.reactions.on_id)
+          items.push_back("id " + std::to_string(id) + " " + vector(f));
+        items.push_back("applied loads " + vector(r.reactions.applied_load));
+        if (this->scene.effects().contact)
+          {
+            std::array<double, 3> on_obstacle{};
+            for (unsigned int c = 0; c < dim; ++c)
+              on_obstacle[c] = -r.zone.resultant[c];
+            items.push_back("force on the obstacle " + vector(on_obstacle));
+          }
+        items.push_back("imbalance " + scientific(r.reactions.imbalance, 1) +
+                        " (relative)");
+        lines.add(130,
+                  wrap("   reactions on the body: ", items, "; ", "     "));
+      }
+    };
+
+    const bool reactions_registered =
+      register_report_quantity<Reactions>("reactions");
+
+    /**
+     * <Solver/Time a reference linear solve>: time_reference,
+     * reference_iterations.
+     */
     template <int dim>
-    bool
-    ReferenceSolve<dim>::has(const Parameters &parameters, const Scene<dim> &)
+    class ReferenceSolve : public ReportQuantity<dim>
     {
-      return parameters.solver.time_reference_solve;
-    }
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
 
+      static bool
+      has(const Parameters &parameters, const Scene<dim> &)
+      {
+        return parameters.solver.time_reference_solve;
+      }
+
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(580, "time_reference", r.solve.time_reference);
+        t.add(590, "reference_iterations", r.solve.reference_iterations);
+      }
+
+      void
+      print(const CycleResult &r, ScreenLines &lines) const override
+      {
+        // what the contact solve costs against one linear solve
+        if (!this->scene.effects().contact)
+          return;
+        lines.add(120,
+                  "   reference: one linear solve on this mesh " +
+                    count(r.solve.reference_iterations) + " CG iterations" +
+                    seconds(r.solve.time_reference,
+                            this->parameters.output.print_timing) +
+                    ", contact / linear = " +
+                    fixed((r.time.assembly + r.time.solve) /
+                            (r.time.assembly + r.solve.time_reference),
+                          2) +
+                    " (assembly included)\n");
+      }
+    };
+
+    const bool reference_solve_registered =
+      register_report_quantity<ReferenceSolve>("reference solve");
+
+    /**
+     * Every scene: time_refine, time_setup, time_assembly, time_solve,
+     * time_output, time_total.
+     */
     template <int dim>
-    void
-    ReferenceSolve<dim>::csv_entries(const CycleResult &r,
-                                     TableEntries      &t) const
+    class WallTimes : public ReportQuantity<dim>
     {
-      t.add(580, "time_reference", r.solve.time_reference);
-      t.add(590, "reference_iterations", r.solve.reference_iterations);
-    }
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
 
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(470, "time_refine", r.time.refine);
+        t.add(480, "time_setup", r.time.setup);
+        t.add(490, "time_assembly", r.time.assembly);
+        t.add(500, "time_solve", r.time.solve);
+        t.add(510, "time_output", r.time.output);
+        t.add(520, "time_total", r.time.total);
+      }
+
+      void
+      summary_entries(const CycleResult &r, TableEntries &s) const override
+      {
+        if (!this->parameters.output.print_timing)
+          return;
+        s.add(160, "refine", r.time.refine);
+        s.add(170, "assemble", r.time.assembly);
+        s.add(180, "solve", r.time.solve);
+        s.add(190, "total", r.time.total);
+      }
+
+      void
+      format_summary(ConvergenceTable &table) const override
+      {
+        if (this->parameters.output.print_timing)
+          for (const std::string key : {"refine", "assemble", "solve", "total"})
+            table.set_precision(key, 3);
+      }
+
+      void
+      row_columns(std::vector<RowColumn> &c) const override
+      {
+        // the cycle's own wall time (time.total counts all cycles so far)
+        if (this->parameters.output.print_timing)
+          c.push_back({210, 0, "time [s]", 9, [](const CycleResult &r) {
+                         return fixed(r.time.cycle, 3);
+                       }});
+      }
+    };
+
+    const bool wall_times_registered =
+      register_report_quantity<WallTimes>("wall times");
+
+    /** Every scene: memory_mb. */
     template <int dim>
-    void
-    ReferenceSolve<dim>::print(const CycleResult &r, ScreenLines &lines) const
+    class Memory : public ReportQuantity<dim>
     {
-      // what the contact solve costs against one linear solve
-      if (!this->scene.effects().contact)
-        return;
-      lines.add(120,
-                "   reference: one linear solve on this mesh " +
-                  count(r.solve.reference_iterations) + " CG iterations" +
-                  seconds(r.solve.time_reference,
-                          this->parameters.output.print_timing) +
-                  ", contact / linear = " +
-                  fixed((r.time.assembly + r.time.solve) /
-                          (r.time.assembly + r.solve.time_reference),
-                        2) +
-                  " (assembly included)\n");
-    }
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
 
-    template <int dim>
-    bool
-    WallTimes<dim>::has(const Parameters &, const Scene<dim> &)
-    {
-      return true;
-    }
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(600, "memory_mb", r.memory_mb);
+      }
+    };
 
-    template <int dim>
-    void
-    WallTimes<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
-    {
-      t.add(470, "time_refine", r.time.refine);
-      t.add(480, "time_setup", r.time.setup);
-      t.add(490, "time_assembly", r.time.assembly);
-      t.add(500, "time_solve", r.time.solve);
-      t.add(510, "time_output", r.time.output);
-      t.add(520, "time_total", r.time.total);
-    }
-
-    template <int dim>
-    void
-    WallTimes<dim>::summary_entries(const CycleResult &r, TableEntries &s) const
-    {
-      if (!this->parameters.output.print_timing)
-        return;
-      s.add(160, "refine", r.time.refine);
-      s.add(170, "assemble", r.time.assembly);
-      s.add(180, "solve", r.time.solve);
-      s.add(190, "total", r.time.total);
-    }
-
-    template <int dim>
-    void
-    WallTimes<dim>::format_summary(ConvergenceTable &table) const
-    {
-      if (this->parameters.output.print_timing)
-        for (const std::string key : {"refine", "assemble", "solve", "total"})
-          table.set_precision(key, 3);
-    }
-
-    template <int dim>
-    void
-    WallTimes<dim>::row_columns(std::vector<RowColumn> &c) const
-    {
-      // the cycle's own wall time (time.total counts all cycles so far)
-      if (this->parameters.output.print_timing)
-        c.push_back({210, 0, "time [s]", 9, [](const CycleResult &r) {
-                       return fixed(r.time.cycle, 3);
-                     }});
-    }
-
-    template <int dim>
-    bool
-    Memory<dim>::has(const Parameters &, const Scene<dim> &)
-    {
-      return true;
-    }
-
-    template <int dim>
-    void
-    Memory<dim>::csv_entries(const CycleResult &r, TableEntries &t) const
-    {
-      t.add(600, "memory_mb", r.memory_mb);
-    }
-
-    template class MeshSize<2>;
-    template class MeshSize<3>;
-    template class NestedIteration<2>;
-    template class NestedIteration<3>;
-    template class LinearSolves<2>;
-    template class LinearSolves<3>;
-    template class Displacement<2>;
-    template class Displacement<3>;
-    template class ColdStart<2>;
-    template class ColdStart<3>;
-    template class Reactions<2>;
-    template class Reactions<3>;
-    template class ReferenceSolve<2>;
-    template class ReferenceSolve<3>;
-    template class WallTimes<2>;
-    template class WallTimes<3>;
-    template class Memory<2>;
-    template class Memory<3>;
-  } // namespace report_quantities_impl
+    const bool memory_registered = register_report_quantity<Memory>("memory");
+  } // namespace
 } // namespace dualcontact
