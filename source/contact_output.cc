@@ -181,10 +181,9 @@ namespace dualcontact
           values[q++] = contact_set.threshold[s];
         values[q++] =
           node.gap0 - contact_set.normal_displacement(displacement, s);
-        values[q++] = contact_set.status(s) + 1.;
-        const Tensor<1, dim - 1> vt =
-          contact_set.tangential_displacement(displacement, s);
-        Tensor<1, dim> slip, traction;
+        values[q++]                 = contact_set.status(s) + 1.;
+        const Tensor<1, dim - 1> vt = contact_set.slip(displacement, s);
+        Tensor<1, dim>           slip, traction;
         for (unsigned int k = 0; k < dim - 1; ++k)
           {
             slip += vt[k] * node.tangents[k];

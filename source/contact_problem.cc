@@ -22,6 +22,7 @@
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/output_directory.h>
+#include <dualcontact/parameter_helpers.h>
 #include <dualcontact/plausibility.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/refinement.h>
@@ -50,6 +51,7 @@ namespace dualcontact
                 RunSizeCheck(parameters, this->mpi_communicator)
                   .check(n_cells, false);
               })
+      , step_times(parameters.load_path.step_times())
       , computing_timer(mpi_communicator,
                         pcout,
                         TimerOutput::never,
@@ -73,8 +75,10 @@ namespace dualcontact
 
   // The algorithm: on each mesh of a nested sequence, set up, carry the
   // previous mesh's fields over, assemble, solve, measure, write; then
-  // refine. Each phase times itself and returns its record; the report
-  // prints them and writes the tables.
+  // refine. A load path of several steps then solves each later step on the
+  // finest mesh, from the state the step before reached. Each phase times
+  // itself and returns its record; the report prints them and writes the
+  // tables.
   template <int dim>
   void
   ContactProblem<dim>::run()
@@ -88,32 +92,51 @@ namespace dualcontact
         make_grid(); // checks the input first: nothing is written before
         report.print_scene();
 
+        // the first step of the load path, on every mesh
+        CycleResult result;
         for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
              ++cycle)
           {
             if (cycle > 0)
               refine_mesh();
 
-            CycleResult result;
+            result          = CycleResult();
+            result.step     = {1, unsigned(step_times.size()), step_times[0]};
             result.mesh     = setup_system(cycle);
             result.transfer = transfer_fields();
             report.start_cycle(result.mesh, result.transfer);
 
-            assemble_system();
-            result.solve    = solve();
-            result.position = check_position();
+            solve_and_measure(result);
             if (scene.effects().contact)
-              {
-                result.zone = measure_contact_zone();
-                result.cold = compare_with_cold_start();
-              }
-            result.errors    = postprocess();
-            result.reactions = compute_reactions(result.zone);
-            check_balance(result.reactions);
+              result.cold = compare_with_cold_start();
 
             output_results(cycle);
             report.end_cycle(result);
           }
+
+        // the later steps, each from the state the step before reached
+        // (doc/theory.md §11)
+        if (step_times.size() > 1)
+          finish_step(result);
+        for (unsigned int step = 2; step <= step_times.size(); ++step)
+          try
+            {
+              result      = CycleResult();
+              result.step = start_step(step, result);
+              solve_and_measure(result);
+              finish_step(result);
+            }
+          catch (const InputError &error)
+            {
+              // a load the obstacle cannot hold: the steps before are
+              // written, and the message says which step failed
+              throw InputError(step_failure(step) + error.what(), error.code);
+            }
+          catch (...)
+            {
+              report.warning(step_failure(step) + "the solve failed.");
+              throw;
+            }
         report.finish();
       }
     catch (...)
@@ -121,6 +144,93 @@ namespace dualcontact
         output.remove_if_unused();
         throw;
       }
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::step_failure(const unsigned int step) const
+  {
+    return "At load step " + std::to_string(step) + " of " +
+           std::to_string(step_times.size()) +
+           " (t = " + number_text(step_times[step - 1]) +
+           "; the steps before "
+           "are written, steps.csv has them): ";
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_and_measure(CycleResult &result)
+  {
+    assemble_system();
+    result.solve    = solve();
+    result.position = check_position();
+    if (scene.effects().contact)
+      result.zone = measure_contact_zone();
+    result.errors    = postprocess();
+    result.reactions = compute_reactions(result.zone);
+    check_balance(result.reactions);
+  }
+
+  template <int dim>
+  StepRecord
+  ContactProblem<dim>::start_step(const unsigned int step, CycleResult &result)
+  {
+    // the state the step before reached: u^{n-1}, and the obstacle there
+    previous_obstacle_displacement = scene.obstacle().displacement();
+    scene.set_time(step_times[step - 1]);
+    report.start_step(step, step_times[step - 1]);
+
+    TrilinosWrappers::MPI::Vector previous_u;
+    if (parameters.load_path.adapt_at_every_step)
+      {
+        // v, the multipliers and the threshold go with the cells; u^{n-1}
+        // is the carried v
+        refine_mesh();
+        result.mesh     = setup_system(report.cycles().size());
+        result.transfer = transfer_fields();
+        previous_u.reinit(locally_owned_dofs,
+                          locally_relevant_dofs,
+                          mpi_communicator);
+        previous_u = carried_v;
+      }
+    else
+      {
+        // the same mesh: its constraints at the new time, the contact nodes
+        // at the obstacle's new place, the multipliers as they are
+        result.mesh = report.cycles().back().mesh;
+        make_constraints();
+        if (scene.effects().contact)
+          contact_set.place_obstacle(scene, mpi_communicator);
+        carried_v.reinit(locally_owned_dofs, mpi_communicator);
+        carried_v                  = solution;
+        carried                    = true;
+        result.transfer.warm_start = true;
+        previous_u                 = solution;
+      }
+    carried_from_step = true;
+    if (scene.effects().contact)
+      contact_set.set_slip_origin(previous_u,
+                                  scene.obstacle().displacement() -
+                                    previous_obstacle_displacement);
+    return {step, unsigned(step_times.size()), step_times[step - 1]};
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::finish_step(CycleResult &result)
+  {
+    if (scene.effects().contact)
+      result.step.dissipation = dissipation();
+    dissipated += result.step.dissipation;
+    result.step.dissipation_total = dissipated;
+    const Tensor<1, dim> U        = scene.obstacle().displacement();
+    for (unsigned int c = 0; c < dim; ++c)
+      result.step.obstacle_displacement[c] = U[c];
+    const StepRecord &step = result.step;
+    if ((step.step - 1) % parameters.load_path.output_interval == 0 ||
+        step.step == step.n_steps)
+      output_step(step);
+    report.end_step(result);
   }
 
   template <int dim>
@@ -154,37 +264,7 @@ namespace dualcontact
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
-    hanging_node_constraints.clear();
-    hanging_node_constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler,
-                                            hanging_node_constraints);
-    hanging_node_constraints.close();
-
-    // Hanging nodes first, then Dirichlet, then sliders: later ones do not
-    // overwrite earlier ones, which keeps the space conforming.
-    const Functions::ZeroFunction<dim> zero(dim);
-    const auto sliders = scene.ids_with(BoundaryCondition::normal_fixed);
-    for (const bool homogeneous : {false, true})
-      {
-        AffineConstraints<double> &c =
-          homogeneous ? homogeneous_constraints : constraints;
-        c.clear();
-        c.reinit(locally_relevant_dofs);
-        c.merge(hanging_node_constraints);
-        for (const types::boundary_id id :
-             scene.ids_with(BoundaryCondition::fixed))
-          VectorTools::interpolate_boundary_values(
-            mapping,
-            dof_handler,
-            id,
-            homogeneous ? static_cast<const Function<dim> &>(zero) :
-                          scene.displacement(id),
-            c);
-        if (!sliders.empty())
-          VectorTools::compute_no_normal_flux_constraints(
-            dof_handler, 0, sliders, c, mapping);
-        c.close();
-      }
+    make_constraints();
 
     DynamicSparsityPattern dsp(locally_relevant_dofs);
     DoFTools::make_sparsity_pattern(dof_handler,
@@ -218,11 +298,49 @@ namespace dualcontact
   }
 
   template <int dim>
+  void
+  ContactProblem<dim>::make_constraints()
+  {
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
+    hanging_node_constraints.close();
+
+    // Hanging nodes first, then Dirichlet, then sliders: later ones do not
+    // overwrite earlier ones, which keeps the space conforming.
+    const Functions::ZeroFunction<dim> zero(dim);
+    const auto sliders = scene.ids_with(BoundaryCondition::normal_fixed);
+    for (const bool homogeneous : {false, true})
+      {
+        AffineConstraints<double> &c =
+          homogeneous ? homogeneous_constraints : constraints;
+        c.clear();
+        c.reinit(locally_relevant_dofs);
+        c.merge(hanging_node_constraints);
+        for (const types::boundary_id id :
+             scene.ids_with(BoundaryCondition::fixed))
+          VectorTools::interpolate_boundary_values(
+            mapping,
+            dof_handler,
+            id,
+            homogeneous ? static_cast<const Function<dim> &>(zero) :
+                          scene.displacement(id),
+            c);
+        if (!sliders.empty())
+          VectorTools::compute_no_normal_flux_constraints(
+            dof_handler, 0, sliders, c, mapping);
+        c.close();
+      }
+  }
+
+  template <int dim>
   TransferRecord
   ContactProblem<dim>::transfer_fields()
   {
     TransferRecord record;
-    carried = false;
+    carried           = false;
+    carried_from_step = false;
     if (!transfer)
       return record;
     TimerOutput::Scope t(computing_timer, "refine mesh");
@@ -421,7 +539,9 @@ namespace dualcontact
                                 v,
                                 &report,
                                 held_by_friction_pressure,
-                                carried);
+                                !carried          ? WarmStart::cold :
+                                carried_from_step ? WarmStart::previous_step :
+                                                    WarmStart::previous_mesh);
     return record;
   }
 

@@ -120,6 +120,18 @@ namespace dualcontact
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::dissipation() const
+  {
+    double local = 0.;
+    if (contact_set.friction)
+      for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+        local += contact_set.nodes[s].weight *
+                 (contact_set.l2[s] * contact_set.slip(solution, s));
+    return Utilities::MPI::sum(local, mpi_communicator);
+  }
+
+  template <int dim>
   ColdStartRecord
   ContactProblem<dim>::compare_with_cold_start()
   {
@@ -211,6 +223,10 @@ namespace dualcontact
   ContactProblem<2>::measure_contact_zone() const;
   template ContactZoneRecord
   ContactProblem<3>::measure_contact_zone() const;
+  template double
+  ContactProblem<2>::dissipation() const;
+  template double
+  ContactProblem<3>::dissipation() const;
   template ColdStartRecord
   ContactProblem<2>::compare_with_cold_start();
   template ColdStartRecord

@@ -1,6 +1,7 @@
-// ContactProblem, the output of a cycle: the displacement, the stresses and
-// the refinement indicator of the body, and the contact fields on Gamma_C,
-// as .vtu/.pvtu files with one .pvd record each over the cycles.
+// ContactProblem, the output of a cycle or of a load step: the displacement,
+// the stresses and the refinement indicator of the body, and the contact
+// fields on Gamma_C, as .vtu/.pvtu files with one .pvd record each over the
+// cycles (the steps).
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/dofs/dof_accessor.h>
@@ -68,6 +69,26 @@ namespace dualcontact
     if (root && !probes.empty())
       probes.write_csv(directory + "/probes.csv");
 
+    write_fields("", cycle, 2, cycle);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::output_step(const StepRecord &step)
+  {
+    TimerOutput::Scope t(computing_timer, "output results");
+    write_fields("_step", step.step, 3, step.time);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_fields(const std::string &tag,
+                                    const unsigned int number,
+                                    const unsigned int digits,
+                                    const double       pvd_time)
+  {
+    const std::string &directory = parameters.output.directory;
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     // one row per contact node, gathered on rank 0
     const bool contact = scene.effects().contact;
     if (contact)
@@ -75,8 +96,8 @@ namespace dualcontact
         const std::vector<ContactNodeRow<dim>> rows =
           gather_contact_rows(contact_set, solution, mpi_communicator);
         if (root)
-          write_contact_csv(directory + "/contact_" +
-                              Utilities::int_to_string(cycle, 2) + ".csv",
+          write_contact_csv(directory + "/contact" + tag + "_" +
+                              Utilities::int_to_string(number, digits) + ".csv",
                             rows,
                             contact_set.law->has_friction(),
                             scene.exact_pressure());
@@ -116,21 +137,24 @@ namespace dualcontact
       data_out.add_data_vector(refinement_indicator(), "refinement_indicator");
     data_out.build_patches(mapping, fe.degree);
 
-    // a .pvd record over all cycles so that ParaView shows them as a
-    // sequence
+    // a .pvd record over all cycles (steps) so that ParaView shows them as
+    // a sequence, each at its cycle (time)
     const auto add_to_pvd = [&](const std::string &name,
                                 const std::string &pvtu) {
-      auto &records = pvd_records[name];
-      records.emplace_back(cycle, pvtu);
+      auto &records = pvd_records[name + tag];
+      records.emplace_back(pvd_time, pvtu);
       if (root)
         {
-          std::ofstream pvd(directory + "/" + name + ".pvd");
+          std::ofstream pvd(directory + "/" + name + tag + ".pvd");
           DataOutBase::write_pvd_record(pvd, records);
         }
     };
     add_to_pvd("solution",
-               data_out.write_vtu_with_pvtu_record(
-                 directory + "/", "solution", cycle, mpi_communicator, 2));
+               data_out.write_vtu_with_pvtu_record(directory + "/",
+                                                   "solution" + tag,
+                                                   number,
+                                                   mpi_communicator,
+                                                   digits));
 
     // Gamma_C: the contact fields on its faces (contact_output.h)
     if (contact)
@@ -144,8 +168,11 @@ namespace dualcontact
                                hanging_node_constraints,
                                locally_relevant_dofs);
         add_to_pvd("contact",
-                   boundary.write_vtu_with_pvtu_record(
-                     directory + "/", "contact", cycle, mpi_communicator, 2));
+                   boundary.write_vtu_with_pvtu_record(directory + "/",
+                                                       "contact" + tag,
+                                                       number,
+                                                       mpi_communicator,
+                                                       digits));
       }
   }
 
@@ -180,6 +207,10 @@ namespace dualcontact
   ContactProblem<2>::output_results(const unsigned int cycle);
   template void
   ContactProblem<3>::output_results(const unsigned int cycle);
+  template void
+  ContactProblem<2>::output_step(const StepRecord &step);
+  template void
+  ContactProblem<3>::output_step(const StepRecord &step);
   template void
   ContactProblem<2>::multiplier_fields(
     TrilinosWrappers::MPI::Vector &multipliers,

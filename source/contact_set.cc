@@ -82,8 +82,7 @@ namespace dualcontact
     weights.compress(VectorOperation::add);
 
     nodes.clear();
-    types::global_dof_index hanging   = 0;
-    unsigned int            no_normal = 0;
+    types::global_dof_index hanging = 0;
     for (auto &[key, node] : candidates)
       {
         if (!owned.is_element(key))
@@ -98,44 +97,14 @@ namespace dualcontact
           any_free |= !all_constraints.is_constrained(node.dofs[c]);
         if (!any_free || !(weights[key] > 0.))
           continue;
-        node.weight                          = weights[key];
-        node.gap0                            = scene.initial_gap(node.position);
-        std::tie(node.normal, node.tangents) = basis_at(node.position);
-        if (!(node.normal.norm() > 0.5))
-          ++no_normal;
+        node.weight = weights[key];
         nodes.push_back(node);
       }
-    if (Utilities::MPI::sum(no_normal, comm) > 0)
-      throw InputError(
-        "The obstacle has no usable normal at " +
-          std::to_string(Utilities::MPI::sum(no_normal, comm)) +
-          " contact node(s): the gradient of its distance is zero or not "
-          "finite there (" +
-          scene.obstacle().entries() + ").",
-        exit_invalid_value);
-
-    // the direction of first contact: the mean normal of the nodes closest
-    // to the obstacle (all nodes on a plane parallel to a plane obstacle)
-    double closest = std::numeric_limits<double>::max();
-    for (const auto &node : nodes)
-      closest = std::min(closest, node.gap0);
-    closest                  = Utilities::MPI::min(closest, comm);
-    const double   tolerance = 1e-8 * scene.characteristic_length();
-    Tensor<1, dim> mean;
-    for (const auto &node : nodes)
-      if (node.gap0 <= closest + tolerance)
-        mean += node.weight * node.normal;
-    for (unsigned int d = 0; d < dim; ++d)
-      mean[d] = Utilities::MPI::sum(mean[d], comm);
-    if (mean.norm() > 0)
-      normal = mean / mean.norm();
-    else // no contact node at all, or normals that cancel: the obstacle's
-      normal = -scene.obstacle().normal(scene.center());
-    tangents = tangent_basis(normal);
-    tangent  = tangents[0];
+    place_obstacle(scene, comm);
 
     l1.assign(nodes.size(), 0.);
     statuses.assign(nodes.size(), separated);
+    slip_origin.assign(nodes.size(), Tensor<1, dim - 1>());
 
     // Friction data at the nodes: the law's parameter (F or g), never
     // negative, and the threshold it gives at zero pressure.
@@ -177,6 +146,62 @@ namespace dualcontact
     for (const auto &node : nodes)
       local_measure += node.weight;
     measure_ = Utilities::MPI::sum(local_measure, comm);
+  }
+
+  template <int dim>
+  void
+  ContactSet<dim>::place_obstacle(const Scene<dim> &scene, const MPI_Comm comm)
+  {
+    obstacle               = &scene.obstacle();
+    unsigned int no_normal = 0;
+    for (auto &node : nodes)
+      {
+        node.gap0                            = scene.initial_gap(node.position);
+        std::tie(node.normal, node.tangents) = basis_at(node.position);
+        if (!(node.normal.norm() > 0.5))
+          ++no_normal;
+      }
+    if (Utilities::MPI::sum(no_normal, comm) > 0)
+      throw InputError(
+        "The obstacle has no usable normal at " +
+          std::to_string(Utilities::MPI::sum(no_normal, comm)) +
+          " contact node(s): the gradient of its distance is zero or not "
+          "finite there (" +
+          scene.obstacle().entries() + ").",
+        exit_invalid_value);
+
+    // the direction of first contact: the mean normal of the nodes closest
+    // to the obstacle (all nodes on a plane parallel to a plane obstacle)
+    double closest = std::numeric_limits<double>::max();
+    for (const auto &node : nodes)
+      closest = std::min(closest, node.gap0);
+    closest                  = Utilities::MPI::min(closest, comm);
+    const double   tolerance = 1e-8 * scene.characteristic_length();
+    Tensor<1, dim> mean;
+    for (const auto &node : nodes)
+      if (node.gap0 <= closest + tolerance)
+        mean += node.weight * node.normal;
+    for (unsigned int d = 0; d < dim; ++d)
+      mean[d] = Utilities::MPI::sum(mean[d], comm);
+    if (mean.norm() > 0)
+      normal = mean / mean.norm();
+    else // no contact node at all, or normals that cancel: the obstacle's
+      normal = -scene.obstacle().normal(scene.center());
+    tangents = tangent_basis(normal);
+    tangent  = tangents[0];
+  }
+
+  template <int dim>
+  void
+  ContactSet<dim>::set_slip_origin(const TrilinosWrappers::MPI::Vector &u,
+                                   const Tensor<1, dim> &obstacle_step)
+  {
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      {
+        slip_origin[s] = tangential_displacement(u, s);
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          slip_origin[s][k] += obstacle_step * nodes[s].tangents[k];
+      }
   }
 
   template <int dim>
@@ -247,7 +272,7 @@ namespace dualcontact
       {
         z[s] = l1[s] + r * (normal_displacement(v, s) - nodes[s].gap0);
         if (friction)
-          y[s] = l2[s] + r_t * tangential_displacement(v, s);
+          y[s] = l2[s] + r_t * slip(v, s);
       }
   }
 

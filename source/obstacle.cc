@@ -59,14 +59,16 @@ namespace dualcontact
       "The rigid obstacle on Gamma_C." + help +
         " Gap and normal are taken at each contact node's "
         "position before deformation (small displacements).");
-    declarer.declare_entry("Displacement",
-                           "",
-                           EntryPattern::list(EntryPattern::number(), 0, 3),
-                           "A rigid translation U of the obstacle, prescribed "
-                           "(e.g. an indentation depth: U = 0, -0.01 moves it "
-                           "down by 0.01) [length], one value per dimension; "
-                           "empty: it stays where it is. The force on the "
-                           "obstacle is reported.");
+    declarer.declare_entry(
+      "Displacement",
+      "",
+      EntryPattern::text(),
+      "A rigid translation U of the obstacle, prescribed (e.g. an "
+      "indentation depth: U = 0, -0.01 moves it down by 0.01) [length], one "
+      "value per dimension, separated by ',' or, when the expressions hold "
+      "commas, by ';'. Each may be an expression in the time t of the load "
+      "path (0; -0.01 * if(t <= 1, t, 2 - t)). Empty: it stays where it is. "
+      "The force on the obstacle is reported.");
     declarer.leave_subsection();
 
     // each kind's entries, once per declaring function (kinds of one file
@@ -99,8 +101,7 @@ namespace dualcontact
     prm.leave_subsection();
     prm.enter_subsection("Obstacle");
     type         = prm.get("Type");
-    displacement = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Displacement"), ','));
+    displacement = prm.get("Displacement");
     prm.leave_subsection();
     obstacle_kind(type); // InputError for a name nobody registered
     // every kind's entries, so that a program may change the kind

@@ -68,11 +68,12 @@ namespace dualcontact
   unsigned int
   OutputDirectory::remove_earlier_results(const std::string &directory)
   {
-    // the names of ContactProblem::output_results() and Report
+    // the names of ContactProblem::output_results(), output_step() and
+    // Report
     static const std::regex ours(
-      "(solution|contact)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu)|"
-      "contact_[0-9]+\\.csv|(solution|contact)\\.pvd|"
-      "(probes|cycles|iterations)\\.csv|parameters\\.prm");
+      "(solution|contact)(_step)?_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu)|"
+      "contact(_step)?_[0-9]+\\.csv|(solution|contact)(_step)?\\.pvd|"
+      "(probes|cycles|steps|iterations)\\.csv|parameters\\.prm");
     std::error_code                    error;
     std::vector<std::filesystem::path> old;
     for (const auto &entry :

@@ -116,13 +116,14 @@ namespace dualcontact
     return true;
   }
 
-  bool
-  uses_coordinates(const std::string &expression, const unsigned int dim)
+  std::set<std::string>
+  identifiers(const std::string &expression)
   {
-    // the identifiers of the expression: a letter or '_', then letters,
-    // digits and '_' (a number's exponent, as in 1e-3, is not one)
-    std::string word;
-    bool        in_number = false;
+    // a letter or '_', then letters, digits and '_' (a number's exponent,
+    // as in 1e-3, is not one)
+    std::set<std::string> words;
+    std::string           word;
+    bool                  in_number = false;
     for (const char c : expression + " ")
       {
         const bool letter =
@@ -137,13 +138,27 @@ namespace dualcontact
           in_number = true;
         else
           {
-            if (word == "x" || word == "y" || (dim == 3 && word == "z"))
-              return true;
+            if (!word.empty())
+              words.insert(word);
             word.clear();
             in_number = digit;
           }
       }
-    return false;
+    return words;
+  }
+
+  bool
+  uses_coordinates(const std::string &expression, const unsigned int dim)
+  {
+    const std::set<std::string> words = identifiers(expression);
+    return words.count("x") || words.count("y") ||
+           (dim == 3 && words.count("z"));
+  }
+
+  bool
+  uses_time(const std::string &expression)
+  {
+    return identifiers(expression).count("t") > 0;
   }
 
   // ------------------------------------------------------------ Parameters
@@ -161,6 +176,7 @@ namespace dualcontact
     RefinementParameters::declare_parameters(declarer);
     OutputParameters::declare_parameters(declarer);
     ExactSolutionParameters::declare_parameters(declarer);
+    LoadPathParameters::declare_parameters(declarer);
   }
 
   void
@@ -176,6 +192,7 @@ namespace dualcontact
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);
     exact.parse_parameters(prm);
+    load_path.parse_parameters(prm);
     check_consistency();
   }
 
@@ -301,6 +318,7 @@ namespace dualcontact
     boundary.check(*this);
     obstacle.check(*this);
     friction.check(*this);
+    load_path.check(*this);
     // last: without contact, a friction law is the more direct cause
     geometry.check_pre_refinement(*this);
   }

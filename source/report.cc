@@ -357,6 +357,7 @@ namespace dualcontact
   {
     iteration_log.push_back(record);
     iteration_log.back().cycle = cycle_results.size();
+    iteration_log.back().step  = step_results.size() + 1;
     if (!shows(Verbosity::detailed))
       return;
     // the last record of a proximal step is the test that ended it: no
@@ -416,6 +417,7 @@ namespace dualcontact
   {
     iteration_log.push_back(record);
     iteration_log.back().cycle = cycle_results.size();
+    iteration_log.back().step  = step_results.size() + 1;
     if (!shows(Verbosity::normal))
       return;
     print_uzawa_header(record.uzawa_step);
@@ -433,6 +435,7 @@ namespace dualcontact
   {
     iteration_log.push_back(record);
     iteration_log.back().cycle = cycle_results.size();
+    iteration_log.back().step  = step_results.size() + 1;
     if (!shows(Verbosity::normal))
       return;
     std::ostringstream label;
@@ -556,6 +559,8 @@ namespace dualcontact
     for (const IterationRecord &r : iteration_log)
       {
         t.add_value("cycle", r.cycle);
+        if (parameters.load_path.step_times().size() > 1)
+          t.add_value("step", r.step);
         t.add_value("loop", to_string(r.loop));
         t.add_value("uzawa_step", r.uzawa_step);
         t.add_value("index", r.index);
@@ -581,10 +586,9 @@ namespace dualcontact
   }
 
   template <int dim>
-  const CycleResult &
-  Report<dim>::end_cycle(const CycleResult &measured)
+  void
+  Report<dim>::complete_times(CycleResult &result)
   {
-    CycleResult result   = measured;
     result.time.refine   = phase_time("refine mesh");
     result.time.setup    = phase_time("setup system");
     result.time.assembly = phase_time("assemble system");
@@ -595,16 +599,24 @@ namespace dualcontact
                         result.time.assembly + result.time.solve +
                         result.time.output + phase_time("postprocess") +
                         phase_time("measure contact zone");
+    const std::vector<CycleResult> &before =
+      step_results.empty() ? cycle_results : step_results;
     result.time.total =
-      (cycle_results.empty() ? 0. : cycle_results.back().time.total) +
-      result.time.cycle;
+      (before.empty() ? 0. : before.back().time.total) + result.time.cycle;
     Utilities::System::MemoryStats stats;
     Utilities::System::get_memory_stats(stats);
     result.memory_mb =
       Utilities::MPI::sum(static_cast<double>(stats.VmHWM), mpi_communicator) /
       1024.;
     previous_totals = timer.get_summary_data(TimerOutput::total_wall_time);
+  }
 
+  template <int dim>
+  const CycleResult &
+  Report<dim>::end_cycle(const CycleResult &measured)
+  {
+    CycleResult result = measured;
+    complete_times(result);
     if (shows(Verbosity::normal))
       print_cycle(result);
     else
@@ -613,6 +625,73 @@ namespace dualcontact
     add_table_rows(result);
     write_csv_files();
     return cycle_results.back();
+  }
+
+  template <int dim>
+  void
+  Report<dim>::start_step(const unsigned int step, const double time)
+  {
+    uzawa_header_shown = false;
+    if (shows(Verbosity::normal))
+      pcout << "Load step " << step << " of "
+            << parameters.load_path.step_times().size() << ", t = " << time
+            << '\n';
+  }
+
+  template <int dim>
+  const CycleResult &
+  Report<dim>::end_step(const CycleResult &measured)
+  {
+    CycleResult result = measured;
+    if (result.step.step > 1)
+      complete_times(result);
+    else
+      pcout << "Load path: " << result.step.n_steps
+            << " steps to t = " << parameters.load_path.step_times().back()
+            << "; "
+            << (loops_of(parameters, scene).friction ?
+                  "friction acts on the slip of each step, so each starts "
+                  "from the state the one before reached (history)" :
+                  "without friction each step is the static problem at its "
+                  "loads (no history), started from the step before")
+            << '\n';
+    step_results.push_back(result);
+
+    // the step's line, at every verbosity
+    const CycleResult       &r     = result;
+    std::vector<std::string> items = {
+      "t = " + significant(r.step.time, 6),
+      "Uzawa " + std::to_string(r.solve.uzawa_steps),
+      "Newton " + std::to_string(r.solve.newton_steps),
+      "CG " + std::to_string(r.solve.cg_iterations)};
+    if (scene.effects().contact)
+      items.push_back("contact force " + significant(r.zone.contact_force, 6));
+    if (loops_of(parameters, scene).friction)
+      {
+        items.push_back("tangential " +
+                        significant(r.zone.tangential_force, 6));
+        items.push_back("stick/slip " + std::to_string(r.solve.n_stick) + "/" +
+                        std::to_string(r.solve.n_slip));
+        items.push_back("dissipated " + scientific(r.step.dissipation) +
+                        " (total " + scientific(r.step.dissipation_total) +
+                        ")");
+      }
+    items.back() += seconds(r.time.cycle);
+    std::ostringstream label;
+    label << "step " << std::setw(4) << r.step.step << ": ";
+    pcout << wrap(label.str(), items, ", ", "            ") << std::flush;
+
+    TableEntries csv;
+    for (const auto &quantity : quantities)
+      quantity->csv_entries(result, csv);
+    csv.write_to(step_table);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ofstream file(parameters.output.directory + "/steps.csv");
+        step_table.write_csv(file);
+      }
+    write_csv_files(); // iterations.csv, with the step's iterations
+    return step_results.back();
   }
 
   template <int dim>

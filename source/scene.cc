@@ -16,6 +16,7 @@
 
 #include <dualcontact/input_error.h>
 #include <dualcontact/mesh_file.h>
+#include <dualcontact/parameter_helpers.h>
 #include <dualcontact/scene.h>
 
 #include <cmath>
@@ -25,15 +26,83 @@
 
 namespace dualcontact
 {
-  /** Parse "a; b" into a vector-valued function, naming the entry on error.
-   */
+  namespace
+  {
+    /**
+     * A FunctionParser of `expression` in `variables` (the time t last if
+     * `of_time`), or nullptr if muparser refuses it. deal.II prints
+     * muparser's diagnostics on std::cerr before it throws; the user gets
+     * our one-line message instead.
+     */
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>>
+    try_parse(const std::string                   &expression,
+              const unsigned int                   n_components,
+              const std::string                   &variables,
+              const std::map<std::string, double> &constants,
+              const bool                           of_time,
+              const double                         length)
+    {
+      // Gradients (for H1 errors) by fourth-order differences with a step
+      // relative to the body's size.
+      auto function =
+        std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-4 * length);
+      function->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
+      std::ostringstream    muparser_diagnostics;
+      std::streambuf *const cerr_buffer =
+        std::cerr.rdbuf(muparser_diagnostics.rdbuf());
+      try
+        {
+          function->initialize(variables, expression, constants, of_time);
+          // muparser may defer some errors to the first evaluation
+          Vector<double> values(n_components);
+          function->vector_value(Point<dim>(), values);
+        }
+      catch (const std::exception &)
+        {
+          function.reset();
+        }
+      std::cerr.rdbuf(cerr_buffer);
+      return function;
+    }
+
+    /**
+     * <Obstacle/Displacement>, "U_x; U_y" (U_z), as dim functions of the
+     * one variable t (evaluated at the point t); checked finite at the
+     * steps' times.
+     */
+    template <int dim>
+    std::unique_ptr<FunctionParser<1>>
+    make_path(const std::string         &expression,
+              const std::vector<double> &times,
+              const double               length)
+    {
+      auto path = try_parse<1>(
+        expression, dim, "t", {{"pi", numbers::PI}}, false, length);
+      if (path == nullptr)
+        throw InputError("The entry <Obstacle/Displacement> is not a valid "
+                         "expression in t: '" +
+                           expression + "'.",
+                         exit_invalid_value);
+      for (const double t : times)
+        for (unsigned int c = 0; c < dim; ++c)
+          if (!std::isfinite(path->value(Point<1>(t), c)))
+            throw InputError("The entry <Obstacle/Displacement> is not a "
+                             "finite number (NaN or infinity) at t = " +
+                               number_text(t) + ": '" + expression + "'.",
+                             exit_invalid_value);
+      return path;
+    }
+  } // namespace
+
   template <int dim>
   std::unique_ptr<Function<dim>>
-  make_function(const std::string        &expression,
-                const unsigned int        n_components,
-                const MaterialParameters &material,
-                const std::string        &entry,
-                const double              length)
+  make_function(const std::string         &expression,
+                const unsigned int         n_components,
+                const MaterialParameters  &material,
+                const std::string         &entry,
+                const double               length,
+                const std::vector<double> &times)
   {
     const std::map<std::string, double> constants = {
       {"pi", numbers::PI},
@@ -41,7 +110,9 @@ namespace dualcontact
       {"nu", material.poissons_ratio},
       {"lambda", material.lambda()},
       {"mu", material.mu()}};
-    const std::string variables = dim == 2 ? "x,y" : "x,y,z";
+    const bool        of_time   = !times.empty();
+    const std::string space     = dim == 2 ? "x,y" : "x,y,z";
+    const std::string variables = space + (of_time ? ",t" : "");
 
     // a vector of zeros of either dimension, such as the default "0; 0",
     // is zero in 2D and 3D alike
@@ -56,48 +127,48 @@ namespace dualcontact
                          std::to_string(n_given) + ": '" + expression + "'.",
                        exit_invalid_value);
 
-    // Gradients (for H1 errors) by fourth-order differences with a step
-    // relative to the body's size.
-    auto function =
-      std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-4 * length);
-    function->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
-    // deal.II prints muparser's diagnostics on std::cerr before it
-    // throws; the user gets our one-line message instead.
-    std::ostringstream    muparser_diagnostics;
-    std::streambuf *const cerr_buffer =
-      std::cerr.rdbuf(muparser_diagnostics.rdbuf());
-    const auto restore_cerr = [cerr_buffer]() { std::cerr.rdbuf(cerr_buffer); };
-    try
+    auto function = try_parse<dim>(
+      expression, n_components, variables, constants, of_time, length);
+    if (function == nullptr)
       {
-        function->initialize(variables, expression, constants);
-        // muparser may defer some errors to the first evaluation
-        Vector<double> values(n_components);
-        function->vector_value(Point<dim>(), values);
-      }
-    catch (const std::exception &)
-      {
-        restore_cerr();
+        if (!of_time && try_parse<dim>(expression,
+                                       n_components,
+                                       space + ",t",
+                                       constants,
+                                       true,
+                                       length) != nullptr)
+          throw InputError(
+            "The entry <" + entry + "> may not depend on the time t: '" +
+              expression +
+              "'. Only the loads (<Boundary conditions/Tractions>, <Boundary "
+              "conditions/Displacements>, <Loads/Body force>) and "
+              "<Obstacle/Displacement> follow the load path.",
+            exit_invalid_value);
         throw InputError("The entry <" + entry +
                            "> is not a valid expression in " + variables +
                            ": '" + expression + "'.",
                          exit_invalid_value);
       }
-    restore_cerr();
-    // An expression without x, y, z is one number: NaN or infinity (0/0,
-    // 1/0) is refused here. One that depends on the position is checked
-    // where it is used (loads, friction at the contact nodes, errors).
+    // An expression without x, y, z is one number at each time: NaN or
+    // infinity (0/0, 1/0) is refused here. One that depends on the position
+    // is checked where it is used (loads, friction at the contact nodes,
+    // errors).
+    const bool follows_path = of_time && uses_time(expression);
     if (!uses_coordinates(expression, dim))
-      {
-        Vector<double> values(n_components);
-        function->vector_value(Point<dim>(), values);
-        for (const double value : values)
-          if (!std::isfinite(value))
-            throw InputError("The entry <" + entry +
-                               "> is not a finite number (NaN or "
-                               "infinity): '" +
-                               expression + "'.",
-                             exit_invalid_value);
-      }
+      for (const double t : follows_path ? times : std::vector<double>{0.})
+        {
+          function->set_time(t);
+          Vector<double> values(n_components);
+          function->vector_value(Point<dim>(), values);
+          for (const double value : values)
+            if (!std::isfinite(value))
+              throw InputError("The entry <" + entry +
+                                 "> is not a finite number (NaN or infinity)" +
+                                 (follows_path ? " at t = " + number_text(t) :
+                                                 std::string()) +
+                                 ": '" + expression + "'.",
+                               exit_invalid_value);
+        }
     return function;
   }
 
@@ -215,6 +286,8 @@ namespace dualcontact
     const MaterialParameters &material = parameters.material;
     const BoundaryParameters &boundary = parameters.boundary;
     const double              length   = characteristic_length();
+    // the loads follow the load path (doc/theory.md §11)
+    const std::vector<double> times = parameters.load_path.step_times();
 
     for (const types::boundary_id id : ids_with(BoundaryCondition::fixed))
       {
@@ -226,18 +299,27 @@ namespace dualcontact
                                dim,
                                material,
                                "Boundary conditions/Displacements",
-                               length);
+                               length,
+                               times);
       }
     for (const types::boundary_id id : ids_with(BoundaryCondition::traction))
       {
         const std::string &expression = boundary.tractions.at(id);
         if (!is_zero_expression(expression))
-          tractions[id] = make_function<dim>(
-            expression, dim, material, "Boundary conditions/Tractions", length);
+          tractions[id] = make_function<dim>(expression,
+                                             dim,
+                                             material,
+                                             "Boundary conditions/Tractions",
+                                             length,
+                                             times);
       }
     if (!is_zero_expression(parameters.loads.body_force))
-      body_force_ = make_function<dim>(
-        parameters.loads.body_force, dim, material, "Loads/Body force", length);
+      body_force_ = make_function<dim>(parameters.loads.body_force,
+                                       dim,
+                                       material,
+                                       "Loads/Body force",
+                                       length,
+                                       times);
     else
       make_function<dim>(parameters.loads.body_force,
                          dim,
@@ -260,14 +342,30 @@ namespace dualcontact
 
     // the obstacle is needed only with contact, but a plane is always
     // there (its entries have defaults), so that gaps are defined
-    obstacle_ = std::make_unique<PlacedObstacle<dim>>(
-      create_obstacle<dim>(parameters, length),
-      to_point<dim>(parameters.obstacle.displacement),
-      obstacle_entries_text(parameters));
+    // there (its entries have defaults), so that gaps are defined; its
+    // translation U(t) is a function of the time alone
+    std::string path;
+    for (const std::string &component :
+         parameters.obstacle.displacement_components())
+      path += (path.empty() ? "" : "; ") + component;
+    if (!path.empty())
+      obstacle_path = make_path<dim>(path, times, length);
+    obstacle_ =
+      std::make_unique<PlacedObstacle<dim>>(create_obstacle<dim>(parameters,
+                                                                 length),
+                                            Tensor<1, dim>(),
+                                            obstacle_entries_text(parameters));
+    set_time(times.front());
 
     effects_.contact  = !ids_with(BoundaryCondition::contact).empty();
     effects_.obstacle = (*obstacle_)->description();
-    if (obstacle_->displacement().norm() > 0)
+    obstacle_moves_   = obstacle_->displacement().norm() > 0;
+    if (obstacle_path != nullptr && times.size() > 1 && uses_time(path))
+      {
+        obstacle_moves_ = true;
+        effects_.obstacle += ", moved by U(t) = (" + path + ")";
+      }
+    else if (obstacle_->displacement().norm() > 0)
       {
         std::ostringstream moved;
         moved << ", moved by (" << obstacle_->displacement() << ")";
@@ -293,6 +391,26 @@ namespace dualcontact
       }
     effects_.body_force = body_force_ != nullptr;
     effects_.tractions  = !tractions.empty();
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::set_time(const double t)
+  {
+    time_ = t;
+    for (auto &[id, function] : displacements)
+      function->set_time(t);
+    for (auto &[id, function] : tractions)
+      function->set_time(t);
+    if (body_force_ != nullptr)
+      body_force_->set_time(t);
+    Tensor<1, dim> U;
+    if (obstacle_path != nullptr)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          U[c] = obstacle_path->value(Point<1>(t), c);
+      }
+    obstacle_->move_to(U);
   }
 
   template <int dim>
@@ -605,13 +723,15 @@ namespace dualcontact
                 unsigned int,
                 const MaterialParameters &,
                 const std::string &,
-                double);
+                double,
+                const std::vector<double> &);
   template std::unique_ptr<Function<3>>
   make_function(const std::string &,
                 unsigned int,
                 const MaterialParameters &,
                 const std::string &,
-                double);
+                double,
+                const std::vector<double> &);
 
   template class Scene<2>;
   template class Scene<3>;

@@ -25,15 +25,16 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector &v,
     IterationObserver             *observer,
     const double                   held_by_friction_pressure,
-    const bool                     warm_start,
+    const WarmStart                start,
     ContactStatistics             &total)
   {
     const auto say = [observer](const std::string &text) {
       if (observer != nullptr)
         observer->note(text);
     };
-    if (warm_start)
-      say("threshold iteration: g^0 carried from the previous mesh");
+    if (start != WarmStart::cold)
+      say(std::string("threshold iteration: g^0 carried from the previous ") +
+          (start == WarmStart::previous_mesh ? "mesh" : "load step"));
     else if (held_by_friction_pressure > 0.)
       {
         std::ostringstream text;
@@ -68,20 +69,15 @@ namespace dualcontact
                                  ContactSet<dim>               &contact,
                                  TrilinosWrappers::MPI::Vector &v,
                                  IterationObserver             *observer,
-                                 const double held_by_friction_pressure,
-                                 const bool   warm_start)
+                                 const double    held_by_friction_pressure,
+                                 const WarmStart start)
   {
     if (!contact.friction || !contact.law->depends_on_pressure())
       return uzawa.solve(system, contact, v, observer);
 
     ContactStatistics total;
-    initial_threshold(system,
-                      contact,
-                      v,
-                      observer,
-                      held_by_friction_pressure,
-                      warm_start,
-                      total);
+    initial_threshold(
+      system, contact, v, observer, held_by_friction_pressure, start, total);
 
     if (parameters.strategy == FrictionStrategy::merged)
       {

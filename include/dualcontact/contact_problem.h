@@ -1,8 +1,9 @@
 // The Problem class, in the shape of a deal.II tutorial: run() loops over
-// refinement cycles and calls one function per phase, each timed with
-// TimerOutput; each phase returns its own record, and the report prints
-// them. The phases are public so that a program (a tutorial step) can call
-// them one by one and replace one, e.g. write the Uzawa loop itself.
+// refinement cycles, then over the later steps of the load path, and calls
+// one function per phase, each timed with TimerOutput; each phase returns
+// its own record, and the report prints them. The phases are public so that a
+// program (a tutorial step) can call them one by one and replace one, e.g.
+// write the Uzawa loop itself.
 #ifndef dualcontact_contact_problem_h
 #define dualcontact_contact_problem_h
 
@@ -57,8 +58,10 @@ namespace dualcontact
                    std::ostream     &out              = std::cout);
 
     /**
-     * Solve on every cycle. Everything that can be wrong with the input is
-     * checked before the first output file is written.
+     * Solve on every cycle at the first time of the load path, then at each
+     * later time from the state the step before reached (doc/theory.md
+     * §11). Everything that can be wrong with the input is checked before
+     * the first output file is written.
      */
     void
     run();
@@ -78,6 +81,13 @@ namespace dualcontact
     setup_system(const unsigned int cycle);
 
     /**
+     * The constraints of the mesh: hanging nodes, then the prescribed
+     * displacements at the scene's time, then the sliders.
+     */
+    void
+    make_constraints();
+
+    /**
      * Nested iteration: interpolate v, the multipliers and the threshold
      * carried across the last refinement onto the new DoFs (nothing on the
      * first mesh, or without <Refinement/Nested iteration>).
@@ -91,6 +101,30 @@ namespace dualcontact
      */
     void
     assemble_system();
+
+    /**
+     * Assemble and solve at the scene's time, then measure: the position,
+     * the contact zone, the errors, the reactions and the balance.
+     */
+    void
+    solve_and_measure(CycleResult &result);
+
+    /**
+     * The next step of the load path (2 .. n_steps): the scene at its time
+     * (loads, obstacle), the mesh (the same, or adapted with
+     * <Load path/Adapt at every step>), the state of the step before as
+     * the first guess, and the slip origin of the friction law.
+     */
+    StepRecord
+    start_step(const unsigned int step, CycleResult &result);
+
+    /**
+     * A solved step of the load path: the energy friction dissipated in it,
+     * its files (every <Load path/Output interval>-th and the last), its
+     * row of steps.csv and line on screen.
+     */
+    void
+    finish_step(CycleResult &result);
 
     /**
      * One linear elasticity solve, or the contact solve: the threshold
@@ -112,6 +146,14 @@ namespace dualcontact
     /** Contact force, peak pressure, width of the zone, pressure errors. */
     ContactZoneRecord
     measure_contact_zone() const;
+
+    /**
+     * The energy friction dissipated in the load step, sum_s m_s l2_s .
+     * (v_t(s) - o_t(s)) over all ranks (doc/theory.md §11); 0 without
+     * friction.
+     */
+    double
+    dissipation() const;
 
     /**
      * With <Refinement/Compare with cold start>: the current mesh solved
@@ -163,12 +205,27 @@ namespace dualcontact
     void
     refine_mesh();
 
+    /**
+     * The files of a step of the load path, named by the step
+     * (contact_step_NNN.csv, solution_step_NNN.pvtu, contact_step_NNN.pvtu)
+     * with .pvd records over the steps that give each its time.
+     */
+    void
+    output_step(const StepRecord &step);
+
     // ------------------------------------------------------- what it holds
 
     const std::vector<CycleResult> &
     results() const
     {
       return report.cycles();
+    }
+
+    /** The steps of a load path of several steps (empty otherwise). */
+    const std::vector<CycleResult> &
+    steps() const
+    {
+      return report.steps();
     }
 
     /** Every Newton, Uzawa and threshold step of every cycle. */
@@ -237,6 +294,9 @@ namespace dualcontact
     }
 
   private:
+    /** "At load step n of N (t = ...; ...): ", the head of its failure. */
+    std::string
+    step_failure(const unsigned int step) const;
     SolveRecord
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
     SolveRecord
@@ -264,6 +324,16 @@ namespace dualcontact
     void
     multiplier_fields(TrilinosWrappers::MPI::Vector &multipliers,
                       TrilinosWrappers::MPI::Vector &threshold) const;
+    /**
+     * contact<tag>_<number>.csv, and with <Output/Write vtu> the volume and
+     * contact fields as solution<tag>_<number>.pvtu, contact<tag>_... with
+     * the records solution<tag>.pvd, contact<tag>.pvd at `pvd_time`.
+     */
+    void
+    write_fields(const std::string &tag,
+                 unsigned int       number,
+                 unsigned int       digits,
+                 double             pvd_time);
 
     // MPI, and the screen of rank 0 (for the timer's summary; everything
     // else is printed by the report)
@@ -274,7 +344,9 @@ namespace dualcontact
     // the problem keeps its own copy of the parameters, which the solvers
     // below refer to
     const Parameters parameters;
-    const Scene<dim> scene;
+    Scene<dim>       scene; // at the time of the load step
+    // the times of the load path
+    const std::vector<double> step_times;
 
     // timing and everything the run tells
     mutable TimerOutput computing_timer; // const phases are timed too
@@ -322,8 +394,14 @@ namespace dualcontact
     // threshold across a refinement, and what it carried to the new mesh
     std::unique_ptr<parallel::distributed::
                       SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>
-                                  transfer;
-    bool                          carried = false;
+         transfer;
+    bool carried = false;
+    // ... or from the previous load step
+    bool carried_from_step = false;
+    // the friction history: the obstacle's translation at the previous
+    // step, and the energy dissipated so far
+    Tensor<1, dim>                previous_obstacle_displacement;
+    double                        dissipated = 0.;
     TrilinosWrappers::MPI::Vector carried_v;
     TrilinosWrappers::MPI::Vector carried_multipliers;
     TrilinosWrappers::MPI::Vector carried_threshold;
@@ -335,8 +413,10 @@ namespace dualcontact
     // the probe points, checked on the first mesh
     Probes<dim> probes;
 
-    // the .pvd record of each output ("solution", "contact"): its (cycle,
-    // .pvtu file) list; and the parameter listing written with the output
+    // the .pvd record of each output ("solution", "contact", and
+    // "solution_step", "contact_step" over the load steps): its (cycle or
+    // time, .pvtu file) list; and the parameter listing written with the
+    // output
     std::map<std::string, std::vector<std::pair<double, std::string>>>
                 pvd_records;
     std::string recorded_parameters;

@@ -95,11 +95,39 @@ namespace dualcontact
     }
 
     /**
+     * The slip of v at local node s against the slip origin of the load
+     * step, v_t(s) - o_t(s) (doc/theory.md §11; o = 0 for a static scene).
+     */
+    Tensor<1, dim - 1>
+    slip(const TrilinosWrappers::MPI::Vector &v, const unsigned int s) const
+    {
+      return tangential_displacement(v, s) - slip_origin[s];
+    }
+
+    /**
+     * The slip origin of a load step, o_t(s) = T_s^T (u(s) + dU), from the
+     * displacement u of the previous step (ghosted) and the obstacle's
+     * translation dU since then (doc/theory.md §11).
+     */
+    void
+    set_slip_origin(const TrilinosWrappers::MPI::Vector &u,
+                    const Tensor<1, dim>                &obstacle_step);
+
+    /**
+     * The gaps g0_s, normals and tangents of the nodes, and the direction of
+     * first contact, for the obstacle where the scene has it now (setup()
+     * calls it; a load step that moves the obstacle calls it again). The
+     * multipliers stay.
+     */
+    void
+    place_obstacle(const Scene<dim> &scene, MPI_Comm comm);
+
+    /**
      * At every local node the arguments of the positive part and of the
      * projection in the Uzawa updates (doc/theory.md §3.2):
      * z_s = l1_s + r (v_n(s) - g0_s) and, with friction,
-     * y_s = l2_s + r_t v_t(s) (r, r_t the normal and tangential
-     * augmentation, doc/theory.md §5).
+     * y_s = l2_s + r_t (v_t(s) - o_t(s)) (r, r_t the normal and tangential
+     * augmentation, doc/theory.md §5; o the slip origin, §11).
      */
     void
     augmented_state(const TrilinosWrappers::MPI::Vector &v,
@@ -257,6 +285,12 @@ namespace dualcontact
 
     /** Each local node's status after the last multiplier update. */
     std::vector<NodeStatus> statuses;
+
+    /**
+     * The slip origin o_t of the load step at each local node, in its
+     * tangent basis (set_slip_origin(); zero after setup()).
+     */
+    std::vector<Tensor<1, dim - 1>> slip_origin;
 
   private:
     types::global_dof_index n_global  = 0;

@@ -81,6 +81,7 @@ namespace dualcontact
   {
     Loop                    loop          = Loop::newton;
     unsigned int            cycle         = 0;
+    unsigned int            step          = 1; // of the load path
     unsigned int            uzawa_step    = 0;
     unsigned int            index         = 0; // Newton or threshold step
     unsigned int            newton_steps  = 0; // uzawa, threshold rows

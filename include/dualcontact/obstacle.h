@@ -116,6 +116,13 @@ namespace dualcontact
       return translation;
     }
 
+    /** Move the obstacle to the translation U (a step of a load path). */
+    void
+    move_to(const Tensor<1, dim> &U)
+    {
+      translation = U;
+    }
+
     /**
      * The entries that give the obstacle's shape and place, for messages
      * ("<Foundation/Point> and <Foundation/Normal>").

@@ -13,6 +13,7 @@
 #include <dualcontact/name_table.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -219,9 +220,14 @@ namespace dualcontact
    */
   struct ObstacleParameters
   {
-    std::string         type = "plane";
-    EntryValues         values; // the entries of every kind
-    std::vector<double> displacement;
+    std::string type = "plane";
+    EntryValues values; // the entries of every kind
+    // U(t): components separated by ';', or by ',' if there is no ';'
+    std::string displacement;
+
+    /** The components of <Obstacle/Displacement> (empty: not moved). */
+    std::vector<std::string>
+    displacement_components() const;
 
     static void
     declare_parameters(EntryDeclarer &declarer);
@@ -353,6 +359,34 @@ namespace dualcontact
     check(const Parameters &parameters) const;
   };
 
+  /**
+   * The load path (doc/theory.md §11): the times t_1 < ... < t_N at which
+   * the scene is solved in turn, uniform (n steps to the end time) or
+   * given as a list; by default one step at t = 1, the static problem.
+   */
+  struct LoadPathParameters
+  {
+    unsigned int        n_steps  = 1;
+    double              end_time = 1.;
+    std::vector<double> times; // empty: uniform
+    bool                adapt_at_every_step = false;
+    unsigned int        output_interval     = 1;
+
+    /** The times of the steps, from the list or uniform. */
+    std::vector<double>
+    step_times() const;
+
+    static void
+    declare_parameters(EntryDeclarer &declarer);
+    void
+    parse_parameters(ParameterHandler &prm);
+    /** The times increase; the end time is positive. */
+    void
+    check(const Parameters &parameters) const;
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
+  };
+
   /** An exact solution, if the scene has one: errors are then reported. */
   struct ExactSolutionParameters
   {
@@ -388,6 +422,7 @@ namespace dualcontact
     RefinementParameters    refinement;
     OutputParameters        output;
     ExactSolutionParameters exact;
+    LoadPathParameters      load_path;
 
     static void
     declare_parameters(EntryDeclarer &declarer);
@@ -488,6 +523,14 @@ namespace dualcontact
    */
   bool
   uses_coordinates(const std::string &expression, unsigned int dim);
+
+  /** The names an expression uses (variables, constants, functions). */
+  std::set<std::string>
+  identifiers(const std::string &expression);
+
+  /** True if the expression names the time t of the load path. */
+  bool
+  uses_time(const std::string &expression);
 } // namespace dualcontact
 
 #endif

@@ -154,9 +154,28 @@ namespace dualcontact
     double cycle    = 0.; // all phases of this cycle (screen only)
   };
 
-  /** One refinement cycle: one row of the cycle table. */
+  /**
+   * A step of the load path (doc/theory.md §11): which, at what time, where
+   * the obstacle is, and the energy friction dissipated.
+   */
+  struct StepRecord
+  {
+    unsigned int          step    = 1; // 1 .. n_steps
+    unsigned int          n_steps = 1;
+    double                time    = 1.;
+    std::array<double, 3> obstacle_displacement{}; // U(t)
+    // sum_s m_s l2_s . (slip of the step), in this step and up to it
+    double dissipation       = 0.;
+    double dissipation_total = 0.;
+  };
+
+  /**
+   * One refinement cycle, or one later step of a load path: one row of the
+   * cycle table (cycles.csv) or of the step table (steps.csv).
+   */
   struct CycleResult
   {
+    StepRecord        step;
     MeshRecord        mesh;
     TransferRecord    transfer;
     SolveRecord       solve;

@@ -99,6 +99,28 @@ namespace dualcontact
     const CycleResult &
     end_cycle(const CycleResult &result);
 
+    /**
+     * A later step of the load path begins (2 .. n): at normal verbosity
+     * its line, above its Uzawa steps.
+     */
+    void
+    start_step(const unsigned int step, const double time);
+
+    /**
+     * A step of the load path is done (the first one: the last cycle's
+     * result, times and all): fill the times of a later step, print its
+     * line, add its row to steps.csv and rewrite the file. Returns the
+     * completed record.
+     */
+    const CycleResult &
+    end_step(const CycleResult &result);
+
+    const std::vector<CycleResult> &
+    steps() const
+    {
+      return step_results;
+    }
+
     /** The convergence table, and the timing summary if asked for. */
     void
     finish() const;
@@ -136,6 +158,13 @@ namespace dualcontact
     double
     phase_time(const std::string &section) const;
 
+    /**
+     * The wall times of the phases since the last cycle or step, the total
+     * so far and the peak memory, into `result`.
+     */
+    void
+    complete_times(CycleResult &result);
+
     /** quiet: the cycle's row (the first under the table's header). */
     void
     print_cycle_row(const CycleResult &result) const;
@@ -165,11 +194,13 @@ namespace dualcontact
     unsigned int last_uzawa_row     = 0;
 
     std::vector<CycleResult>     cycle_results;
+    std::vector<CycleResult>     step_results; // a load path's steps
     std::vector<IterationRecord> iteration_log;
     // the quantities the scene has: their columns and lines
     std::vector<std::unique_ptr<ReportQuantity<dim>>> quantities;
 
     CsvTable         cycle_table;  // every quantity's columns: cycles.csv
+    CsvTable         step_table;   // the same, one row per step: steps.csv
     ConvergenceTable screen_table; // the summary on screen
     bool             summary_has_errors = false; // errors in screen_table
   };

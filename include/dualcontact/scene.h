@@ -31,16 +31,19 @@ namespace dualcontact
   /**
    * An expression of <entry> ("a; b" for a vector) as a function of x, y
    * (z) with the constants pi, E, nu, lambda, mu; gradients by fourth-order
-   * differences with a step 1e-4 `length`. Throws InputError naming the
-   * entry if it does not parse or has the wrong number of components.
+   * differences with a step 1e-4 `length`. With `times` (the steps of the
+   * load path), also of the time t, set by Function::set_time(). Throws
+   * InputError naming the entry if it does not parse, has the wrong number
+   * of components, or uses t without `times`.
    */
   template <int dim>
   std::unique_ptr<Function<dim>>
-  make_function(const std::string        &expression,
-                const unsigned int        n_components,
-                const MaterialParameters &material,
-                const std::string        &entry,
-                const double              length);
+  make_function(const std::string         &expression,
+                const unsigned int         n_components,
+                const MaterialParameters  &material,
+                const std::string         &entry,
+                const double               length,
+                const std::vector<double> &times = {});
 
   /** What a scene calls for; the solver composes only these. */
   struct Effects
@@ -180,6 +183,31 @@ namespace dualcontact
       return exact_.get();
     }
 
+    /**
+     * Set the time t of the load path (doc/theory.md §11): the loads and
+     * the obstacle's translation U(t) follow. The scene starts at the first
+     * step's time.
+     */
+    void
+    set_time(double t);
+
+    /**
+     * Whether <Obstacle/Displacement> moves the obstacle: away from where
+     * it is given at the first step, or along the load path.
+     */
+    bool
+    obstacle_moves() const
+    {
+      return obstacle_moves_;
+    }
+
+    /** The time the loads and the obstacle are at. */
+    double
+    time() const
+    {
+      return time_;
+    }
+
     /** The rigid obstacle, in its prescribed position. */
     const PlacedObstacle<dim> &
     obstacle() const
@@ -222,7 +250,12 @@ namespace dualcontact
     std::unique_ptr<Function<dim>>       exact_pressure_;
     std::unique_ptr<Function<dim>>       friction_;
     std::unique_ptr<PlacedObstacle<dim>> obstacle_;
-    Functions::ZeroFunction<dim>         zero{dim};
+    // <Obstacle/Displacement>, dim functions of t evaluated at the point t
+    // (nullptr: not moved)
+    std::unique_ptr<Function<1>> obstacle_path;
+    double                       time_           = 0.;
+    bool                         obstacle_moves_ = false;
+    Functions::ZeroFunction<dim> zero{dim};
   };
 } // namespace dualcontact
 

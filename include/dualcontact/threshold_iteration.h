@@ -14,6 +14,17 @@ namespace dualcontact
 {
   using namespace dealii;
 
+  /**
+   * Where a solve starts: from zero, or from the fields carried from the
+   * previous mesh (nested iteration) or from the previous load step.
+   */
+  enum class WarmStart
+  {
+    cold,
+    previous_mesh,
+    previous_step
+  };
+
   template <int dim>
   class ThresholdIteration
   {
@@ -29,8 +40,8 @@ namespace dualcontact
      *    until |g^{s+1} - g^s| <= tol |g^{s+1}|;
      *  - merged: g updated after every Uzawa step, one loop.
      * g^0 is zero, or the law's threshold at the frictionless pressure, or,
-     * with `warm_start` (nested iteration), the thresholds in `contact`,
-     * carried from the previous mesh. If only friction holds the body
+     * with a warm start, the thresholds in `contact`, carried from the
+     * previous mesh or load step. If only friction holds the body
      * tangentially under a tangential load, the problems with g^0 = 0 have
      * no solution (nested) or let the body slide first (merged); the caller
      * then passes the mean contact pressure N / |Gamma_C| as
@@ -44,7 +55,7 @@ namespace dualcontact
           TrilinosWrappers::MPI::Vector &v,
           IterationObserver             *observer                  = nullptr,
           const double                   held_by_friction_pressure = 0.,
-          const bool                     warm_start                = false);
+          const WarmStart                start = WarmStart::cold);
 
   private:
     /** g^0, as solve() says; may solve the frictionless problem first. */
@@ -54,7 +65,7 @@ namespace dualcontact
                       TrilinosWrappers::MPI::Vector &v,
                       IterationObserver             *observer,
                       const double                   held_by_friction_pressure,
-                      const bool                     warm_start,
+                      const WarmStart                start,
                       ContactStatistics             &total);
 
     const FrictionParameters &parameters;

@@ -1,6 +1,8 @@
 // <Obstacle>: the checks that need the dimension and the boundary
 // conditions, and the entries that have no effect. The subsection is
 // declared and parsed in source/obstacle.cc, beside the registry of kinds.
+#include <deal.II/base/utilities.h>
+
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_helpers.h>
@@ -20,8 +22,22 @@ namespace dualcontact
     const ObstacleKind &kind = obstacle_kind(type);
     if (kind.check != nullptr)
       kind.check(values, dim);
-    if (!displacement.empty())
-      need_values(displacement, "Obstacle/Displacement", dim);
+    const std::size_t n = displacement_components().size();
+    if (n > 0 && n != dim)
+      throw InputError("The entry <Obstacle/Displacement> needs " +
+                         std::to_string(dim) +
+                         " values (one per dimension), not " +
+                         std::to_string(n) + ".",
+                       exit_inconsistent);
+  }
+
+  std::vector<std::string>
+  ObstacleParameters::displacement_components() const
+  {
+    if (displacement.find_first_not_of(" \t") == std::string::npos)
+      return {};
+    return Utilities::split_string_list(
+      displacement, displacement.find(';') != std::string::npos ? ';' : ',');
   }
 
   std::vector<IneffectiveRule>

@@ -466,8 +466,7 @@ namespace dualcontact
       static bool
       has(const Parameters &, const Scene<dim> &scene)
       {
-        return scene.effects().contact &&
-               scene.obstacle().displacement().norm() > 0.;
+        return scene.effects().contact && scene.obstacle_moves();
       }
 
       void

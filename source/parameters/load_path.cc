@@ -1,0 +1,111 @@
+// <Load path>: the times at which the scene is solved, one after the other,
+// each step from the state the previous one reached (doc/theory.md §11).
+#include <dualcontact/input_error.h>
+#include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
+
+#include <cmath>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  void
+  LoadPathParameters::declare_parameters(EntryDeclarer &declarer)
+  {
+    declarer.enter_subsection("Load path");
+    declarer.declare_entry(
+      "Number of steps",
+      "1",
+      EntryPattern::whole_number(1, 100000),
+      "Number of load steps, at the times t = T/n, 2T/n, ..., T with T = "
+      "<Load path/End time> [-]. The tractions, the displacements, the body "
+      "force and the obstacle's displacement may depend on t; each step "
+      "starts from the state the previous one reached, and friction acts on "
+      "the slip of the step. 1: one static solve at t = T.");
+    declarer.declare_entry(
+      "End time",
+      "1",
+      EntryPattern::number(0.),
+      "The time T of the last step of a uniform path [time]: t is the "
+      "parameter of the loading (no inertia, no rate in the friction law), "
+      "in whatever unit the expressions use.");
+    declarer.declare_entry(
+      "Times",
+      "",
+      EntryPattern::list(EntryPattern::number(0.)),
+      "The times of the steps, an increasing list (t_1, t_2, ...) [time]; "
+      "when given, it replaces <Load path/Number of steps> and <Load "
+      "path/End time>. A path that starts with a small step (0.001, 0.1, "
+      "0.2, ..., 1) loads gradually from the undeformed state.");
+    declarer.declare_entry(
+      "Adapt at every step",
+      "false",
+      EntryPattern::boolean(),
+      "false: the refinement cycles run at the first step and the finest "
+      "mesh serves every later step. true: before every later step the mesh "
+      "is adapted once (<Refinement/Strategy>, refine and coarsen fractions) "
+      "from the solution of the previous step, which is carried across with "
+      "the multipliers and the friction history.");
+    declarer.declare_entry(
+      "Output interval",
+      "1",
+      EntryPattern::whole_number(1),
+      "Write the fields of every n-th step and of the last (contact_step_*.csv "
+      "and, with <Output/Write vtu>, the .vtu files) [-]; steps.csv gets "
+      "every step.");
+    declarer.leave_subsection();
+  }
+
+  void
+  LoadPathParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load path");
+    n_steps             = prm.get_integer("Number of steps");
+    end_time            = prm.get_double("End time");
+    times               = parse_doubles(prm.get("Times"));
+    adapt_at_every_step = prm.get_bool("Adapt at every step");
+    output_interval     = prm.get_integer("Output interval");
+    prm.leave_subsection();
+  }
+
+  std::vector<double>
+  LoadPathParameters::step_times() const
+  {
+    if (!times.empty())
+      return times;
+    std::vector<double> uniform(n_steps);
+    for (unsigned int n = 0; n < n_steps; ++n)
+      uniform[n] = end_time * (n + 1) / n_steps;
+    return uniform;
+  }
+
+  void
+  LoadPathParameters::check(const Parameters &) const
+  {
+    for (std::size_t n = 1; n < times.size(); ++n)
+      if (!(times[n] > times[n - 1]))
+        throw InputError("The entry <Load path/Times> must increase: " +
+                           number_text(times[n]) + " follows " +
+                           number_text(times[n - 1]) + ".",
+                         exit_invalid_value);
+    if (times.empty() && !(end_time > 0.))
+      throw InputError("The entry <Load path/End time> must be greater than "
+                       "0.",
+                       exit_invalid_value);
+  }
+
+  std::vector<IneffectiveRule>
+  LoadPathParameters::ineffective_rules(const Parameters &) const
+  {
+    const bool one_step = step_times().size() == 1;
+    return {{!times.empty(),
+             "Load path",
+             {"Number of steps", "End time"},
+             "<Load path/Times> gives the times"},
+            {one_step,
+             "Load path",
+             {"Adapt at every step", "Output interval"},
+             "the path has one step"}};
+  }
+} // namespace dualcontact

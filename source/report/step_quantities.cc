@@ -1,0 +1,57 @@
+// The quantities of a load path of several steps (doc/theory.md §11): which
+// step, at what time, where the obstacle is, and the energy friction
+// dissipated. Each class is followed by the line that registers it; places
+// and registration: report_quantity.h.
+#include <dualcontact/report_quantity.h>
+
+#include "format.h"
+
+namespace dualcontact
+{
+  namespace
+  {
+    using namespace report_format;
+
+    /**
+     * A load path of several steps: step, time; with friction dissipation,
+     * dissipation_total; with an obstacle moved by <Obstacle/Displacement>
+     * obstacle_displacement_x, _y (_z).
+     */
+    template <int dim>
+    class LoadStep : public ReportQuantity<dim>
+    {
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
+
+      static bool
+      has(const Parameters &parameters, const Scene<dim> &)
+      {
+        return parameters.load_path.step_times().size() > 1;
+      }
+
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        t.add(4, "step", r.step.step);
+        t.add(6, "time", r.step.time);
+        if (this->scene.effects().contact &&
+            this->scene.effects().friction_law().has_friction())
+          {
+            t.add(315, "dissipation", r.step.dissipation);
+            t.add(316, "dissipation_total", r.step.dissipation_total);
+          }
+        if (this->scene.obstacle_moves())
+          {
+            const char *axes[] = {"x", "y", "z"};
+            for (unsigned int c = 0; c < dim; ++c)
+              t.add(465,
+                    std::string("obstacle_displacement_") + axes[c],
+                    r.step.obstacle_displacement[c]);
+          }
+      }
+    };
+
+    const bool load_step_registered =
+      register_report_quantity<LoadStep>("load step");
+  } // namespace
+} // namespace dualcontact
