@@ -111,7 +111,7 @@ namespace dualcontact
               result.cold = compare_with_cold_start();
 
             output_results(cycle);
-            report.end_cycle(result);
+            result = report.end_cycle(result); // with its times
           }
 
         // the later steps, each from the state the step before reached

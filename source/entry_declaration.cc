@@ -45,7 +45,68 @@ namespace dualcontact
         return "semicolon-separated";
       return "'" + separator + "'-separated";
     }
+
+    /** Patterns::Map whose pairs are separated by commas outside parentheses.
+     */
+    class ExpressionMapPattern : public Patterns::PatternBase
+    {
+    public:
+      explicit ExpressionMapPattern(const Patterns::PatternBase &key)
+          : key(key.clone())
+      {}
+
+      bool
+      match(const std::string &text) const override
+      {
+        for (const std::string &item : split_outside_parentheses(text, ','))
+          {
+            const auto colon = item.find(':');
+            if (colon == std::string::npos ||
+                !key->match(dealii::Utilities::trim(item.substr(0, colon))))
+              return false;
+          }
+        return true;
+      }
+
+      std::string
+      description(const OutputStyle) const override
+      {
+        return "[Map of <" + key->description() +
+               ">:<expression> separated by commas outside parentheses]";
+      }
+
+      std::unique_ptr<Patterns::PatternBase>
+      clone() const override
+      {
+        return std::make_unique<ExpressionMapPattern>(*key);
+      }
+
+    private:
+      std::unique_ptr<Patterns::PatternBase> key;
+    };
   } // namespace
+
+  std::vector<std::string>
+  split_outside_parentheses(const std::string &text, const char separator)
+  {
+    std::vector<std::string> pieces;
+    std::string              piece;
+    int                      depth = 0;
+    for (const char c : text)
+      {
+        depth += (c == '(') - (c == ')');
+        if (c == separator && depth <= 0)
+          {
+            pieces.push_back(dealii::Utilities::trim(piece));
+            piece.clear();
+          }
+        else
+          piece += c;
+      }
+    if (!dealii::Utilities::trim(piece).empty() || !pieces.empty())
+      pieces.push_back(dealii::Utilities::trim(piece));
+    return pieces;
+  }
 
   // ------------------------------------------------------------ EntryPattern
 
@@ -168,6 +229,15 @@ namespace dualcontact
                           key_separator),
             words,
             words};
+  }
+
+  EntryPattern
+  EntryPattern::expression_map(const EntryPattern &key)
+  {
+    const std::string words =
+      "a comma-separated list of 'key: expression' pairs (each key " +
+      key.words() + "; commas inside parentheses belong to the expression)";
+    return {ExpressionMapPattern(key.pattern()), words, words};
   }
 
   const Patterns::PatternBase &

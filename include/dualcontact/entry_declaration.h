@@ -95,6 +95,14 @@ namespace dualcontact
         const std::string  &separator  = ",",
         const std::string  &key_separator = ":");
 
+    /**
+     * Pairs 'key: expression' separated by commas outside parentheses, so
+     * that an expression may hold commas (if(t <= 1, t, 2 - t)), each key
+     * accepted by `key`; the expression is the text after the first ':'.
+     */
+    static EntryPattern
+    expression_map(const EntryPattern &key);
+
     /** The deal.II pattern. */
     const dealii::Patterns::PatternBase &
     pattern() const;
@@ -116,6 +124,13 @@ namespace dualcontact
     std::string                                          singular_words;
     std::string                                          plural_words;
   };
+
+  /**
+   * `text` split at each `separator` outside parentheses, the pieces
+   * trimmed: "1: if(t < 1, t, 1), 2: 0" gives "1: if(t < 1, t, 1)" and "2: 0".
+   */
+  std::vector<std::string>
+  split_outside_parentheses(const std::string &text, char separator);
 
   /**
    * The entries declared through an EntryDeclarer: for each, where it is

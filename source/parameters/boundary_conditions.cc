@@ -16,14 +16,15 @@ namespace dualcontact
   namespace
   {
     /**
-     * Split "k1: v1, k2: v2" into (key, value) pairs, keeping the order and
-     * any repeated key (repeats are an error the caller reports).
+     * Split "k1: v1, k2: v2" into (key, value) pairs at the commas outside
+     * parentheses, keeping the order and any repeated key (repeats are an
+     * error the caller reports).
      */
     std::vector<std::pair<boundary_id, std::string>>
     split_id_map(const std::string &text)
     {
       std::vector<std::pair<boundary_id, std::string>> result;
-      for (const std::string &item : Utilities::split_string_list(text, ','))
+      for (const std::string &item : split_outside_parentheses(text, ','))
         {
           if (item.empty())
             continue;
@@ -112,18 +113,20 @@ namespace dualcontact
     declarer.declare_entry(
       "Displacements",
       "",
-      id_map_pattern(EntryPattern::text()),
+      EntryPattern::expression_map(EntryPattern::whole_number(0, 255)),
       "Prescribed displacement on 'fixed' ids, as 'id: u_x; u_y' [length]; "
-      "each component an expression in x, y (z) with the constants pi, E, "
-      "nu, lambda, mu (no commas or colons inside). Fixed ids not listed "
-      "here are clamped (zero displacement).");
+      "each component an expression in x, y (z) and the time t of the load "
+      "path (<Load path>), with the constants pi, E, nu, lambda, mu; commas "
+      "only inside parentheses (if(t <= 1, t, 1)). Fixed ids not listed here "
+      "are clamped (zero displacement).");
     declarer.declare_entry(
       "Tractions",
       "",
-      id_map_pattern(EntryPattern::text()),
+      EntryPattern::expression_map(EntryPattern::whole_number(0, 255)),
       "Prescribed traction on 'traction' ids, as 'id: T_x; T_y' [stress = "
-      "force/length^2]; each component an expression in x, y (z) with the "
-      "constants pi, E, nu, lambda, mu (no commas or colons inside). A "
+      "force/length^2]; each component an expression in x, y (z) and the "
+      "time t of the load path (<Load path>), with the constants pi, E, nu, "
+      "lambda, mu; commas only inside parentheses (if(t <= 1, t, 1)). A "
       "pressure p on a face with outer normal n is the traction -p n. Every "
       "'traction' id must be listed.");
     declarer.leave_subsection();

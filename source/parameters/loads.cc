@@ -14,9 +14,9 @@ namespace dualcontact
       "0; 0",
       EntryPattern::text(),
       "Body force f per unit volume, 'f_x; f_y' (one component per "
-      "dimension) [force/length^3]; each an expression in x, y (z) with the "
-      "constants pi, E, nu, lambda, mu. All zero: no body force is "
-      "assembled.");
+      "dimension) [force/length^3]; each an expression in x, y (z) and the "
+      "time t of the load path (<Load path>), with the constants pi, E, nu, "
+      "lambda, mu. All zero: no body force is assembled.");
     declarer.leave_subsection();
   }
 
