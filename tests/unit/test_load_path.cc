@@ -1,0 +1,246 @@
+// Load paths with friction history (doc/theory.md §11), against what is
+// known: a path without history gives the same answer in any number of
+// steps (the GRECO plate under proportional loads), Spence's growing stick
+// zone of a Hertz contact loaded in more and more steps, and the order of
+// loading of a cylinder pressed and sheared (at once, normal first, in
+// proportion). Tagged [path]: ctest runs them apart from the other unit
+// tests, on 1 and 2 ranks. Every assertion is on a value reduced over all
+// ranks.
+
+#include <deal.II/base/mpi.h>
+
+#include <dualcontact/contact_problem.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "scene_run.h"
+#include "test_tools.h"
+
+using namespace dualcontact;
+using namespace dualcontact_test;
+
+namespace
+{
+  /** (x, l1, l2) of every contact node after the last step, sorted by x. */
+  std::vector<std::array<double, 3>>
+  tractions(const Run &run)
+  {
+    const ContactSet<2> &c = run.problem->contact();
+    std::vector<double>  local;
+    for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
+      local.insert(local.end(), {c.nodes[s].position[0], c.l1[s], c.l2[s][0]});
+    std::vector<std::array<double, 3>> all;
+    for (const auto &part : Utilities::MPI::all_gather(run.comm, local))
+      for (std::size_t i = 0; i + 2 < part.size(); i += 3)
+        all.push_back({{part[i], part[i + 1], part[i + 2]}});
+    std::sort(all.begin(), all.end());
+    return all;
+  }
+
+  /** The record of the last step (or of the last cycle of a static run). */
+  const CycleResult &
+  last_step(const Run &run)
+  {
+    return run.problem->steps().empty() ? run.last() :
+                                          run.problem->steps().back();
+  }
+
+  std::string
+  path_of(const unsigned int n_steps)
+  {
+    return "subsection Load path\n  set Number of steps = " +
+           std::to_string(n_steps) + "\nend\n";
+  }
+} // namespace
+
+TEST_CASE("No spurious history: the GRECO plate under proportional loads "
+          "gives the same answer in 1, 5 and 50 steps",
+          "[path]")
+{
+  const Run  one("greco_plate.prm", path_of(1));
+  const auto reference = tractions(one);
+  double     scale     = 0.;
+  for (const auto &node : reference)
+    scale = std::max(scale, node[1]);
+  // a contact in partial slip: both zones are there
+  CHECK(last_step(one).solve.n_stick > 0);
+  CHECK(last_step(one).solve.n_slip > 0);
+  for (const unsigned int n : {5u, 50u})
+    {
+      const Run  run("greco_plate.prm", path_of(n));
+      const auto other = tractions(run);
+      REQUIRE(other.size() == reference.size());
+      double difference = 0.;
+      for (std::size_t i = 0; i < other.size(); ++i)
+        difference = std::max({difference,
+                               std::abs(other[i][1] - reference[i][1]),
+                               std::abs(other[i][2] - reference[i][2])});
+      INFO(n << " steps: largest difference of l1, l2 " << difference / scale
+             << " of max l1");
+      // the Uzawa tolerance is 1e-8 relative
+      CHECK(difference <= 1e-7 * scale);
+      CHECK(last_step(run).solve.n_slip == last_step(one).solve.n_slip);
+    }
+}
+
+TEST_CASE("Spence: a Hertz contact with friction at nu = 0.3 loaded in 1, 2, "
+          "5 and 20 steps: the stick zone grows toward gradual loading's",
+          "[path]")
+{
+  // beta = 0.29, F = 0.3: Spence's uncoupled closed form
+  // beta / F = K(k') / K(k) gives c/a = 0.744 for gradual loading
+  const double        gradual = 0.744;
+  std::vector<double> ratio, element;
+  for (const unsigned int n : {1u, 2u, 5u, 20u})
+    {
+      const Run                run("hertz_friction.prm",
+                    "subsection Boundary conditions\n  set Tractions = 1: 0; "
+                                   "-4.315374524161804 * t\nend\n" +
+                      path_of(n));
+      const ContactZoneRecord &zone = last_step(run).zone;
+      ratio.push_back(zone.stick_half_width / zone.edge_half_width);
+      // the contact element at the edge of the zone
+      std::vector<double> x;
+      for (const auto &node : tractions(run))
+        x.push_back(node[0]);
+      double h = 1.;
+      for (std::size_t i = 1; i < x.size(); ++i)
+        if (std::abs(x[i]) < zone.edge_half_width)
+          h = std::min(h, x[i] - x[i - 1]);
+      element.push_back(h / zone.edge_half_width);
+      INFO(n << " steps: c/a = " << ratio.back());
+    }
+  INFO("c/a in 1, 2, 5, 20 steps: " << ratio[0] << ", " << ratio[1] << ", "
+                                    << ratio[2] << ", " << ratio[3]
+                                    << "; gradual (Spence) " << gradual);
+  // one step from the undeformed state: about 0.3 a
+  CHECK(ratio[0] > 0.25);
+  CHECK(ratio[0] < 0.40);
+  // more steps, more stick; the changes shrink: it converges
+  CHECK(ratio[1] > ratio[0]);
+  CHECK(ratio[2] > ratio[1]);
+  CHECK(ratio[3] >= ratio[2]);
+  CHECK(ratio[3] - ratio[2] < ratio[2] - ratio[1]);
+  // 20 steps: within two contact elements of the gradual-loading value
+  CHECK(std::abs(ratio[3] - gradual) <= 2. * element[3]);
+}
+
+namespace
+{
+  /** The smallest spacing of contact nodes with |x| < a: the contact element.
+   */
+  double
+  contact_element(const Run &run, const double a)
+  {
+    std::vector<double> x;
+    for (const auto &node : tractions(run))
+      x.push_back(node[0]);
+    double h = a;
+    for (std::size_t i = 1; i < x.size(); ++i)
+      if (std::abs(x[i]) < a)
+        h = std::min(h, x[i] - x[i - 1]);
+    return h;
+  }
+
+  /** Hertz's half-width of a cylinder R = 1 pressed by P (plane strain). */
+  double
+  hertz_half_width(const double P, const Parameters &parameters)
+  {
+    const double nu     = parameters.material.poissons_ratio;
+    const double E_star = parameters.material.youngs_modulus / (1. - nu * nu);
+    return std::sqrt(4. * P / (numbers::PI * E_star));
+  }
+} // namespace
+
+TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz: a cylinder pressed, "
+          "sheared to Q*, back to -Q* and to Q* again: the stick zone of "
+          "every step",
+          "[path]")
+{
+  const Run                       run("cattaneo_mindlin.prm", "");
+  const std::vector<CycleResult> &steps = run.problem->steps();
+  REQUIRE(steps.size() == 16);
+  const double F = 0.3;
+  // Q along the first shear, signed by the clamp's reaction
+  const auto Q = [&](const unsigned int n) {
+    return steps[n].reactions.on_id.at(1)[0] *
+           (steps[7].reactions.on_id.at(1)[0] > 0. ? 1. : -1.);
+  };
+  const double a_first =
+    hertz_half_width(steps[3].zone.contact_force, run.parameters);
+  const double h     = contact_element(run, a_first);
+  double       worst = 0.;
+  for (unsigned int n = 4; n < 16; ++n)
+    {
+      const double P = steps[n].zone.contact_force;
+      const double a = hertz_half_width(P, run.parameters);
+      double       c = 0.;
+      if (n < 8) // loading from 0 to Q*
+        c = a * std::sqrt(1. - Q(n) / (F * P));
+      else if (n < 12) // unloading from Q* (step 8)
+        c = a * std::sqrt(1. - (Q(7) - Q(n)) / (2. * F * P));
+      else // reloading from -Q* (step 12)
+        c = a * std::sqrt(1. - (Q(n) - Q(11)) / (2. * F * P));
+      const double measured = steps[n].zone.stick_half_width;
+      INFO("step " << n + 1 << ": Q/(F P) = " << Q(n) / (F * P)
+                   << ", stick half-width " << measured << " against " << c
+                   << " (" << (measured - c) / h << " contact elements)");
+      // nu = 0.45 (beta = 0.09): the normal load leaves an odd shear in
+      // the stick zone, which narrows it on one side by up to two contact
+      // elements against the formulas for beta = 0
+      CHECK(std::abs(measured - c) <= 2.5 * h);
+      worst = std::max(worst, std::abs(measured - c) / h);
+    }
+  INFO("largest difference " << worst << " contact elements (" << h << ")");
+  // the cycle reaches a real partial slip: Q*/(F P) about 1/3
+  CHECK(Q(7) / (F * steps[7].zone.contact_force) > 0.3);
+}
+
+TEST_CASE("Path dependence: the same final clamp displacement at once, normal "
+          "first then shear, and in proportion from a small first step",
+          "[path]")
+{
+  const std::string at_once =
+    "subsection Boundary conditions\n  set Displacements = 1: 0.002; "
+    "-0.01\nend\nsubsection Load path\n  set Times = 1\nend\n";
+  const std::string normal_first =
+    "subsection Boundary conditions\n  set Displacements = 1: 0.002 * "
+    "max(t - 1, 0); -0.01 * min(t, 1)\nend\nsubsection Load path\n  set "
+    "Times = 1, 2\nend\n";
+  const std::string proportional =
+    "subsection Boundary conditions\n  set Displacements = 1: 0.002 * t; "
+    "-0.01 * t\nend\nsubsection Load path\n  set Times = 0.001, 0.1, 0.2, "
+    "0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1\nend\n";
+  const Run          a("cattaneo_mindlin.prm", at_once);
+  const Run          b("cattaneo_mindlin.prm", normal_first);
+  const Run          c("cattaneo_mindlin.prm", proportional);
+  const CycleResult &ra = last_step(a), &rb = last_step(b);
+  const double       F = 0.3;
+  const double       h =
+    contact_element(b, hertz_half_width(rb.zone.contact_force, b.parameters));
+  // (a) and (b): Cattaneo's partial slip, the same stick zone
+  for (const CycleResult *r : {&ra, &rb})
+    {
+      const double P = r->zone.contact_force;
+      const double Q = r->zone.tangential_force;
+      const double stick =
+        hertz_half_width(P, b.parameters) * std::sqrt(1. - Q / (F * P));
+      INFO("Q/(F P) = " << Q / (F * P) << ", stick half-width "
+                        << r->zone.stick_half_width << " against " << stick);
+      // within two contact elements at beta = 0.09, as in the cycle above
+      CHECK(std::abs(r->zone.stick_half_width - stick) <= 2. * h);
+      CHECK(r->solve.n_slip > 10);
+    }
+  CHECK(std::abs(ra.zone.stick_half_width - rb.zone.stick_half_width) <= h);
+  // (c): in proportion the contact sticks where (a) and (b) slip; at beta =
+  // 0.09 the normal load's growth still lets a few nodes at the edges slip
+  // (Mindlin's no-slip answer needs beta = 0)
+  const CycleResult &rc = last_step(c);
+  INFO("slip nodes at the end: at once "
+       << ra.solve.n_slip << ", normal first " << rb.solve.n_slip
+       << ", in proportion " << rc.solve.n_slip);
+  CHECK(rc.solve.n_slip * 5 <= rb.solve.n_slip);
+  CHECK(rc.solve.n_stick > rb.solve.n_stick);
+}
