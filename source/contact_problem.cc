@@ -175,8 +175,10 @@ namespace dualcontact
   StepRecord
   ContactProblem<dim>::start_step(const unsigned int step, CycleResult &result)
   {
-    // the state the step before reached: u^{n-1}, and the obstacle there
+    // the state the step before reached: u^{n-1}, its size, and the
+    // obstacle there
     previous_obstacle_displacement = scene.obstacle().displacement();
+    previous_size                  = solution_size();
     scene.set_time(step_times[step - 1]);
     report.start_step(step, step_times[step - 1]);
 
@@ -498,10 +500,49 @@ namespace dualcontact
   ContactSystem
   ContactProblem<dim>::contact_system()
   {
-    ContactSystem system{
-      system_matrix, mass, system_rhs, homogeneous_constraints, r, r_t, chi};
-    system.free_motions = &free_motions;
+    ContactSystem system{system_matrix,
+                         mass,
+                         system_rhs,
+                         homogeneous_constraints,
+                         r,
+                         r_t,
+                         chi,
+                         1.,
+                         &free_motions,
+                         previous_size};
     return system;
+  }
+
+  template <int dim>
+  SolutionSize
+  ContactProblem<dim>::solution_size() const
+  {
+    SolutionSize size;
+    double       sums[3] = {0., 0., 0.};
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        const double m = contact_set.nodes[s].weight;
+        sums[2] += m * contact_set.l1[s];
+        sums[0] += contact_set.l1[s] * contact_set.l1[s];
+        sums[1] +=
+          m * m *
+          (contact_set.l1[s] * contact_set.l1[s] +
+           (contact_set.friction ? contact_set.l2[s].norm_square() : 0.));
+        size.l1_max = std::max(size.l1_max, contact_set.l1[s]);
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 3),
+                        mpi_communicator,
+                        ArrayView<double>(sums, 3));
+    size.contact_force = sums[2];
+    size.l1_norm       = std::sqrt(sums[0]);
+    size.force_norm    = std::sqrt(sums[1]);
+    size.l1_max        = Utilities::MPI::max(size.l1_max, mpi_communicator);
+    // norms of the owned entries (a ghosted vector has none of its own)
+    TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
+    owned       = solution;
+    size.v_norm = owned.l2_norm();
+    size.v_max  = owned.linfty_norm();
+    return size;
   }
 
   template <int dim>

@@ -213,7 +213,10 @@ namespace dualcontact
       }
     for (unsigned int c = 0; c < dim; ++c)
       sum[c] += zone.resultant[c];
-    scale            = std::max(scale, std::sqrt(norm_square(zone.resultant)));
+    scale = std::max(scale, std::sqrt(norm_square(zone.resultant)));
+    // along a load path, not below the previous step's contact force: a
+    // step that unloads everything balances to the round-off of the path
+    scale            = std::max(scale, previous_size.contact_force);
     record.imbalance = scale > 0. ? std::sqrt(norm_square(sum)) / scale : 0.;
     return record;
   }

@@ -384,6 +384,9 @@ namespace dualcontact
     if (contact_forces > 0.)
       reference =
         reference > 0. ? std::min(reference, contact_forces) : contact_forces;
+    // along a load path, not below the previous step's contact forces: a
+    // step that unloads everything stops at the round-off of the path
+    reference = std::max(reference, system->previous.force_norm);
     if (!(reference > 0.))
       reference = 1.; // nothing loads the body: v = 0 at once
 

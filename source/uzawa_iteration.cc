@@ -105,16 +105,18 @@ namespace dualcontact
     complementarity = Utilities::MPI::max(complementarity, comm);
 
     IterationRecord record;
-    record.loop      = Loop::uzawa;
-    record.n_active  = counts[0];
-    record.n_stick   = counts[1];
-    record.n_slip    = counts[2];
-    record.change_l1 = relative_change(std::sqrt(sums[0]), std::sqrt(sums[1]));
+    record.loop     = Loop::uzawa;
+    record.n_active = counts[0];
+    record.n_stick  = counts[1];
+    record.n_slip   = counts[2];
+    const double l1_norm =
+      std::max(std::sqrt(sums[1]), system.previous.l1_norm);
+    record.change_l1 = relative_change(std::sqrt(sums[0]), l1_norm);
     // l2 relative to the contact forces, not to itself: where the exact l2
     // is zero (no tangential load, nu = 0) |l2| is round-off, and a change
     // relative to it never falls below the tolerance (doc/theory.md §6)
     record.change_l2 = relative_change(std::sqrt(sums[2]),
-                                       std::sqrt(std::max(sums[1], sums[3])));
+                                       std::max(std::sqrt(sums[3]), l1_norm));
     record.change_g  = relative_change(std::sqrt(sums[4]), std::sqrt(sums[5]));
     TrilinosWrappers::MPI::Vector change(v);
     change -= v_previous;
@@ -124,12 +126,15 @@ namespace dualcontact
     if (system.free_motions != nullptr)
       for (const TrilinosWrappers::MPI::Vector &w : *system.free_motions)
         change.add(-(w * change), w);
-    const double v_norm_inf = v.linfty_norm();
+    const double v_norm_inf = std::max(v.linfty_norm(), system.previous.v_max);
     record.norm_v           = v.l2_norm();
-    record.change_v         = relative_change(change.l2_norm(), record.norm_v);
-    record.violation        = relative_change(violation, v_norm_inf);
+    record.change_v =
+      relative_change(change.l2_norm(),
+                      std::max(record.norm_v, system.previous.v_norm));
+    record.violation = relative_change(violation, v_norm_inf);
     record.complementarity =
-      relative_change(complementarity, l1_max * v_norm_inf);
+      relative_change(complementarity,
+                      std::max(l1_max, system.previous.l1_max) * v_norm_inf);
     return record;
   }
 

@@ -294,6 +294,9 @@ namespace dualcontact
     }
 
   private:
+    /** The size of the solution now (ContactSystem::previous). */
+    SolutionSize
+    solution_size() const;
     /** "At load step n of N (t = ...; ...): ", the head of its failure. */
     std::string
     step_failure(const unsigned int step) const;
@@ -400,8 +403,10 @@ namespace dualcontact
     bool carried_from_step = false;
     // the friction history: the obstacle's translation at the previous
     // step, and the energy dissipated so far
-    Tensor<1, dim>                previous_obstacle_displacement;
-    double                        dissipated = 0.;
+    Tensor<1, dim> previous_obstacle_displacement;
+    double         dissipated = 0.;
+    // the size of the previous step's solution (ContactSystem::previous)
+    SolutionSize                  previous_size;
     TrilinosWrappers::MPI::Vector carried_v;
     TrilinosWrappers::MPI::Vector carried_multipliers;
     TrilinosWrappers::MPI::Vector carried_threshold;

@@ -21,6 +21,21 @@ namespace dualcontact
   using namespace dealii;
 
   /**
+   * The size of a contact solution: the nodal Euclidean norms of l1 and v,
+   * their largest entries, the norm of the nodal contact forces
+   * m_s (l1_s, l2_s), and the total contact force.
+   */
+  struct SolutionSize
+  {
+    double l1_norm       = 0.;
+    double l1_max        = 0.;
+    double v_norm        = 0.;
+    double v_max         = 0.;
+    double force_norm    = 0.;
+    double contact_force = 0.; // sum_s m_s l1_s
+  };
+
+  /**
    * The discrete problem one contact solve works on, all condensed with the
    * constraints: K = A + chi M, the lumped mass matrix M, the load b, and
    * r, chi (doc/theory.md §3, §5). The proximal weight of a step may be
@@ -48,6 +63,12 @@ namespace dualcontact
     // does not determine v along them, and the Uzawa iteration's d(v)
     // leaves them out (doc/theory.md §6). Empty, or null, if there are none.
     const std::vector<TrilinosWrappers::MPI::Vector> *free_motions = nullptr;
+    // Along a load path, the size of the previous step's solution: the
+    // stopping tests measure changes against the larger of it and this
+    // step's own, so that a step whose solution vanishes (everything
+    // unloaded) stops at the round-off of the path's scale (doc/theory.md
+    // §11). Zero on a first step and in a static scene.
+    SolutionSize previous;
 
     /** The proximal weight of the step [stress/length^2]. */
     double

@@ -244,3 +244,67 @@ TEST_CASE("Path dependence: the same final clamp displacement at once, normal "
   CHECK(rc.solve.n_slip * 5 <= rb.solve.n_slip);
   CHECK(rc.solve.n_stick > rb.solve.n_stick);
 }
+
+TEST_CASE("Unloading to zero: the shear taken back leaves locked-in "
+          "tractions; the normal load taken back releases the contact",
+          "[path]")
+{
+  // pressed (t = 1), sheared (t = 2), the shear taken back (t = 3), the
+  // clamp back where it started (t = 4)
+  const Run                       run("cattaneo_mindlin.prm",
+                "subsection Boundary conditions\n  set Displacements = 1: "
+                                      "0.002 * if(t <= 1, 0, if(t <= 2, t - 1, if(t <= 3, 3 - t, "
+                                      "0))); -0.01 * if(t <= 3, min(t, 1), 4 - t)\nend\n"
+                                      "subsection Load path\n  set Times = 0.5, 1, 1.5, 2, 2.5, 3, "
+                                      "3.5, 4\nend\n");
+  const std::vector<CycleResult> &steps = run.problem->steps();
+  REQUIRE(steps.size() == 8);
+  const double F  = 0.3;
+  const double p0 = steps[1].zone.max_pressure;
+  // t = 3: no net shear, but tractions locked in by the history; the
+  // contact force of the clamp's reaction balances
+  const CycleResult &unsheared = steps[5];
+  INFO("t = 3: tangential force " << unsheared.zone.tangential_force
+                                  << ", contact force "
+                                  << unsheared.zone.contact_force);
+  CHECK(unsheared.zone.tangential_force <
+        1e-2 * F * unsheared.zone.contact_force);
+  CHECK(unsheared.solve.n_slip > 0);
+  CHECK(unsheared.step.dissipation_total > steps[3].step.dissipation_total);
+  // t = 4: nothing is left but round-off
+  const auto final_state = tractions(run);
+  double     largest     = 0.;
+  for (const auto &node : final_state)
+    largest = std::max({largest, node[1], std::abs(node[2])});
+  INFO("t = 4: largest l1, |l2| " << largest << " (p0 at t = 1: " << p0 << ")");
+  CHECK(largest <= 1e-8 * p0);
+  CHECK(steps.back().zone.contact_force <= 1e-8 * steps[1].zone.contact_force);
+}
+
+TEST_CASE("Adapt at every step: the same meshes and the same stick zones on "
+          "all ranks and on one",
+          "[path]")
+{
+  const std::string adapt =
+    "subsection Boundary conditions\n  set Tractions = 1: 0; "
+    "-4.315374524161804 * t\nend\nsubsection Refinement\n  set Strategy = "
+    "contact\n  set Coarsen fraction = 0.1\n  set Number of cycles = 1\nend\n"
+    "subsection Load path\n  set Number of steps = 3\n  set Adapt at every "
+    "step = true\nend\n";
+  const Run   world("hertz_friction.prm", adapt);
+  const Run   alone("hertz_friction.prm", adapt, MPI_COMM_SELF);
+  const auto &a = world.problem->steps(), &b = alone.problem->steps();
+  REQUIRE(a.size() == 3);
+  REQUIRE(b.size() == 3);
+  for (unsigned int n = 0; n < 3; ++n)
+    {
+      INFO("step " << n + 1 << ": " << a[n].mesh.n_dofs << " DoFs");
+      CHECK(a[n].mesh.n_dofs == b[n].mesh.n_dofs);
+      CHECK(a[n].solve.n_stick == b[n].solve.n_stick);
+      CHECK(std::abs(a[n].zone.contact_force - b[n].zone.contact_force) <=
+            1e-8 * a[n].zone.contact_force);
+      CHECK(a[n].zone.stick_half_width == Approx(b[n].zone.stick_half_width));
+    }
+  // the mesh follows the growing zone
+  CHECK(a[2].mesh.n_dofs > a[0].mesh.n_dofs);
+}
