@@ -169,6 +169,11 @@ namespace dualcontact
     result.errors    = postprocess();
     result.reactions = compute_reactions(result.zone);
     check_balance(result.reactions);
+    // the energy friction dissipated in this step (on each mesh of the
+    // first step: from the undeformed state)
+    if (scene.effects().contact)
+      result.step.dissipation = dissipation();
+    result.step.dissipation_total = dissipated + result.step.dissipation;
   }
 
   template <int dim>
@@ -221,11 +226,8 @@ namespace dualcontact
   void
   ContactProblem<dim>::finish_step(CycleResult &result)
   {
-    if (scene.effects().contact)
-      result.step.dissipation = dissipation();
-    dissipated += result.step.dissipation;
-    result.step.dissipation_total = dissipated;
-    const Tensor<1, dim> U        = scene.obstacle().displacement();
+    dissipated             = result.step.dissipation_total;
+    const Tensor<1, dim> U = scene.obstacle().displacement();
     for (unsigned int c = 0; c < dim; ++c)
       result.step.obstacle_displacement[c] = U[c];
     const StepRecord &step = result.step;

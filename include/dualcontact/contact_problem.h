@@ -104,7 +104,8 @@ namespace dualcontact
 
     /**
      * Assemble and solve at the scene's time, then measure: the position,
-     * the contact zone, the errors, the reactions and the balance.
+     * the contact zone, the errors, the reactions, the balance and the
+     * energy friction dissipated.
      */
     void
     solve_and_measure(CycleResult &result);
@@ -119,8 +120,8 @@ namespace dualcontact
     start_step(const unsigned int step, CycleResult &result);
 
     /**
-     * A solved step of the load path: the energy friction dissipated in it,
-     * its files (every <Load path/Output interval>-th and the last), its
+     * A solved step of the load path: the energy dissipated up to it, its
+     * files (every <Load path/Output interval>-th and the last), its
      * row of steps.csv and line on screen.
      */
     void
