@@ -101,7 +101,7 @@ namespace dualcontact
               refine_mesh();
 
             result          = CycleResult();
-            result.step     = {1, unsigned(step_times.size()), step_times[0]};
+            result.step     = step_record(1);
             result.mesh     = setup_system(cycle);
             result.transfer = transfer_fields();
             report.start_cycle(result.mesh, result.transfer);
@@ -219,7 +219,18 @@ namespace dualcontact
       contact_set.set_slip_origin(previous_u,
                                   scene.obstacle().displacement() -
                                     previous_obstacle_displacement);
-    return {step, unsigned(step_times.size()), step_times[step - 1]};
+    return step_record(step);
+  }
+
+  template <int dim>
+  StepRecord
+  ContactProblem<dim>::step_record(const unsigned int step) const
+  {
+    StepRecord record;
+    record.step    = step;
+    record.n_steps = step_times.size();
+    record.time    = step_times[step - 1];
+    return record;
   }
 
   template <int dim>
@@ -230,7 +241,23 @@ namespace dualcontact
     const Tensor<1, dim> U = scene.obstacle().displacement();
     for (unsigned int c = 0; c < dim; ++c)
       result.step.obstacle_displacement[c] = U[c];
+    // where the loaded boundaries went, and the probes, at every step
+    std::set<types::boundary_id> loaded =
+      scene.ids_with(BoundaryCondition::traction);
+    for (const types::boundary_id id : scene.ids_with(BoundaryCondition::fixed))
+      loaded.insert(id);
+    result.step.boundary_displacement =
+      mean_boundary_displacements(mapping, dof_handler, solution, loaded);
     const StepRecord &step = result.step;
+    probes.evaluate_step(step.step,
+                         step.time,
+                         mapping,
+                         dof_handler,
+                         solution,
+                         parameters.material);
+    if (!probes.empty() &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      probes.write_step_csv(parameters.output.directory + "/probes_steps.csv");
     if ((step.step - 1) % parameters.load_path.output_interval == 0 ||
         step.step == step.n_steps)
       output_step(step);

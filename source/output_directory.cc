@@ -73,7 +73,8 @@ namespace dualcontact
     static const std::regex ours(
       "(solution|contact)(_step)?_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu)|"
       "contact(_step)?_[0-9]+\\.csv|(solution|contact)(_step)?\\.pvd|"
-      "(probes|cycles|steps|iterations)\\.csv|parameters\\.prm");
+      "(probes|probes_steps|cycles|steps|iterations)\\.csv|steps\\.gp|"
+      "parameters\\.prm");
     std::error_code                    error;
     std::vector<std::filesystem::path> old;
     for (const auto &entry :

@@ -10,6 +10,8 @@
 
 #include <dualcontact/postprocess.h>
 
+#include <iterator>
+
 namespace dualcontact
 {
   template <int dim>
@@ -136,6 +138,66 @@ namespace dualcontact
                         ArrayView<double>(sums, 2));
     return sums[1] > 0. ? std::sqrt(sums[0] / sums[1]) : std::sqrt(sums[0]);
   }
+
+  template <int dim>
+  std::map<types::boundary_id, std::array<double, 3>>
+  mean_boundary_displacements(const Mapping<dim>                  &mapping,
+                              const DoFHandler<dim>               &dof_handler,
+                              const TrilinosWrappers::MPI::Vector &solution,
+                              const std::set<types::boundary_id>  &ids)
+  {
+    const QGauss<dim - 1> quadrature(dof_handler.get_fe().degree + 1);
+    FEFaceValues<dim>     fe_face(mapping,
+                              dof_handler.get_fe(),
+                              quadrature,
+                              update_values | update_JxW_values);
+    const FEValuesExtractors::Vector u(0);
+    std::vector<Tensor<1, dim>>      values(quadrature.size());
+    // per id: the integrals of u_x, u_y, (u_z) and the measure
+    std::vector<double> sums(ids.size() * (dim + 1), 0.);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              ids.count(cell->face(f)->boundary_id()))
+            {
+              const auto    id = ids.find(cell->face(f)->boundary_id());
+              double *const sum =
+                &sums[std::distance(ids.begin(), id) * (dim + 1)];
+              fe_face.reinit(cell, f);
+              fe_face[u].get_function_values(solution, values);
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  for (unsigned int c = 0; c < dim; ++c)
+                    sum[c] += values[q][c] * fe_face.JxW(q);
+                  sum[dim] += fe_face.JxW(q);
+                }
+            }
+    Utilities::MPI::sum(sums,
+                        dof_handler.get_triangulation().get_communicator(),
+                        sums);
+    std::map<types::boundary_id, std::array<double, 3>> means;
+    unsigned int                                        i = 0;
+    for (const types::boundary_id id : ids)
+      {
+        std::array<double, 3> &mean = means[id];
+        const double          *sum  = &sums[i++ * (dim + 1)];
+        for (unsigned int c = 0; c < dim; ++c)
+          mean[c] = sum[dim] > 0. ? sum[c] / sum[dim] : 0.;
+      }
+    return means;
+  }
+
+  template std::map<types::boundary_id, std::array<double, 3>>
+  mean_boundary_displacements<2>(const Mapping<2> &,
+                                 const DoFHandler<2> &,
+                                 const TrilinosWrappers::MPI::Vector &,
+                                 const std::set<types::boundary_id> &);
+  template std::map<types::boundary_id, std::array<double, 3>>
+  mean_boundary_displacements<3>(const Mapping<3> &,
+                                 const DoFHandler<3> &,
+                                 const TrilinosWrappers::MPI::Vector &,
+                                 const std::set<types::boundary_id> &);
 
   template double
   compute_pressure_error<2>(const Mapping<2> &,

@@ -239,15 +239,12 @@ namespace dualcontact
   }
 
   template <int dim>
-  void
-  Probes<dim>::evaluate(const unsigned int                   cycle,
-                        const Mapping<dim>                  &mapping,
-                        const DoFHandler<dim>               &dof_handler,
-                        const TrilinosWrappers::MPI::Vector &solution,
-                        const MaterialParameters            &material)
+  std::vector<typename Probes<dim>::Value>
+  Probes<dim>::measure(const Mapping<dim>                  &mapping,
+                       const DoFHandler<dim>               &dof_handler,
+                       const TrilinosWrappers::MPI::Vector &solution,
+                       const MaterialParameters            &material) const
   {
-    if (points.empty())
-      return;
     // a point outside the body within the tolerance is evaluated at the
     // nearest point of the body; one farther outside is not found
     const std::vector<Location<dim>> locations =
@@ -262,14 +259,14 @@ namespace dualcontact
       mapping, dof_handler, solution, where, cache);
     const auto grad =
       VectorTools::point_gradients<dim>(cache, dof_handler, solution);
-    const double lambda = material.lambda();
-    const double mu     = material.mu();
+    const double       lambda = material.lambda();
+    const double       mu     = material.mu();
+    std::vector<Value> values(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
-        Value value;
-        value.cycle = cycle;
-        value.probe = i;
-        value.point = points[i];
+        Value &value = values[i];
+        value.probe  = i;
+        value.point  = points[i];
         if (cache.point_found(i))
           {
             value.displacement = u[i];
@@ -280,23 +277,57 @@ namespace dualcontact
         else // a later mesh lost the point (a concave curved boundary)
           {
             const double nan      = std::numeric_limits<double>::quiet_NaN();
-            value.displacement    = Tensor<1, dim>();
             value.displacement[0] = nan;
             value.stress[0][0]    = nan;
             value.stress_zz       = nan;
             value.von_mises       = nan;
           }
+      }
+    return values;
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::evaluate(const unsigned int                   cycle,
+                        const Mapping<dim>                  &mapping,
+                        const DoFHandler<dim>               &dof_handler,
+                        const TrilinosWrappers::MPI::Vector &solution,
+                        const MaterialParameters            &material)
+  {
+    if (points.empty())
+      return;
+    for (Value &value : measure(mapping, dof_handler, solution, material))
+      {
+        value.cycle = cycle;
         all_values.push_back(value);
       }
   }
 
   template <int dim>
   void
-  Probes<dim>::write_csv(const std::string &filename) const
+  Probes<dim>::evaluate_step(const unsigned int                   step,
+                             const double                         time,
+                             const Mapping<dim>                  &mapping,
+                             const DoFHandler<dim>               &dof_handler,
+                             const TrilinosWrappers::MPI::Vector &solution,
+                             const MaterialParameters            &material)
+  {
+    if (points.empty())
+      return;
+    for (Value &value : measure(mapping, dof_handler, solution, material))
+      {
+        value.step = step;
+        value.time = time;
+        all_step_values.push_back(value);
+      }
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::write_header(std::ostream &csv)
   {
     static const char axis[] = "xyz";
-    std::ofstream     csv(filename);
-    csv << "cycle,probe";
+    csv << "probe";
     for (unsigned int d = 0; d < dim; ++d)
       csv << ',' << axis[d];
     for (unsigned int d = 0; d < dim; ++d)
@@ -308,22 +339,54 @@ namespace dualcontact
       for (unsigned int j = i + 1; j < dim; ++j)
         csv << ",sigma_" << axis[i] << axis[j];
     csv << ",von_mises\n";
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::write_row(std::ostream &csv, const Value &v)
+  {
+    csv << v.probe + 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << ',' << tidy(v.point[d]);
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << ',' << tidy(v.displacement[d]);
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << ',' << tidy(v.stress[d][d]);
+    if (dim == 2)
+      csv << ',' << tidy(v.stress_zz);
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i + 1; j < dim; ++j)
+        csv << ',' << tidy(v.stress[i][j]);
+    csv << ',' << tidy(v.von_mises) << '\n';
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::write_csv(const std::string &filename) const
+  {
+    std::ofstream csv(filename);
+    csv << "cycle,";
+    write_header(csv);
     csv << std::setprecision(12);
     for (const Value &v : all_values)
       {
-        csv << v.cycle << ',' << v.probe + 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          csv << ',' << tidy(v.point[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          csv << ',' << tidy(v.displacement[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          csv << ',' << tidy(v.stress[d][d]);
-        if (dim == 2)
-          csv << ',' << tidy(v.stress_zz);
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = i + 1; j < dim; ++j)
-            csv << ',' << tidy(v.stress[i][j]);
-        csv << ',' << tidy(v.von_mises) << '\n';
+        csv << v.cycle << ',';
+        write_row(csv, v);
+      }
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::write_step_csv(const std::string &filename) const
+  {
+    std::ofstream csv(filename);
+    csv << "step,time,";
+    write_header(csv);
+    csv << std::setprecision(12);
+    for (const Value &v : all_step_values)
+      {
+        csv << v.step << ',' << v.time << ',';
+        write_row(csv, v);
       }
   }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "report/format.h"
+#include "report/loop_figure.h"
 
 namespace dualcontact
 {
@@ -689,6 +690,10 @@ namespace dualcontact
       {
         std::ofstream file(parameters.output.directory + "/steps.csv");
         step_table.write_csv(file);
+        if (scene.effects().contact)
+          write_loop_script<dim>(parameters.output.directory,
+                                 step_results,
+                                 scene.obstacle_moves());
       }
     write_csv_files(); // iterations.csv, with the step's iterations
     return step_results.back();

@@ -119,9 +119,14 @@ namespace dualcontact
     StepRecord
     start_step(const unsigned int step, CycleResult &result);
 
+    /** Step `step` of the load path: its number, the count, its time. */
+    StepRecord
+    step_record(const unsigned int step) const;
+
     /**
-     * A solved step of the load path: the energy dissipated up to it, its
-     * files (every <Load path/Output interval>-th and the last), its
+     * A solved step of the load path: the energy dissipated up to it, the
+     * loaded boundaries' mean displacements, the probes (probes_steps.csv),
+     * its files (every <Load path/Output interval>-th and the last), its
      * row of steps.csv and line on screen.
      */
     void

@@ -17,7 +17,9 @@
 #include <dualcontact/parameters.h>
 #include <dualcontact/records.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace dualcontact
@@ -122,6 +124,19 @@ namespace dualcontact
                          const TrilinosWrappers::MPI::Vector &multipliers,
                          const std::set<types::boundary_id>  &contact_ids,
                          const Function<dim>                 &exact);
+
+  /**
+   * The mean displacement |Gamma_i|^{-1} int_{Gamma_i} u ds of the ghosted
+   * `solution` over each boundary part i of `ids`: where a clamp was moved
+   * to, or how far a loaded face moved (the displacement of a load path's
+   * force-displacement loop), components x, y (z). Collective.
+   */
+  template <int dim>
+  std::map<types::boundary_id, std::array<double, 3>>
+  mean_boundary_displacements(const Mapping<dim>                  &mapping,
+                              const DoFHandler<dim>               &dof_handler,
+                              const TrilinosWrappers::MPI::Vector &solution,
+                              const std::set<types::boundary_id>  &ids);
 } // namespace dualcontact
 
 #endif

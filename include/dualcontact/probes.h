@@ -1,5 +1,6 @@
 // Probe points (<Output/Probe points>): the displacement and the stress at
-// given points of the body, for every cycle, written to probes.csv.
+// given points of the body, for every cycle, written to probes.csv, and for
+// every step of a load path, written to probes_steps.csv.
 #ifndef dualcontact_probes_h
 #define dualcontact_probes_h
 
@@ -35,10 +36,12 @@ namespace dualcontact
   class Probes
   {
   public:
-    /** What a probe found on one cycle. */
+    /** What a probe found on one cycle, or at one step of a load path. */
     struct Value
     {
       unsigned int            cycle = 0;
+      unsigned int            step  = 1; // of the load path, from 1
+      double                  time  = 1.;
       unsigned int            probe = 0; // its index in the entry, from 0
       Point<dim>              point;
       Tensor<1, dim>          displacement;
@@ -92,11 +95,30 @@ namespace dualcontact
              const TrilinosWrappers::MPI::Vector &solution,
              const MaterialParameters            &material);
 
+    /**
+     * The same at a step of a load path (on the mesh of that step), added
+     * to step_values() as the rows of `step` at `time`. Collective.
+     */
+    void
+    evaluate_step(const unsigned int                   step,
+                  const double                         time,
+                  const Mapping<dim>                  &mapping,
+                  const DoFHandler<dim>               &dof_handler,
+                  const TrilinosWrappers::MPI::Vector &solution,
+                  const MaterialParameters            &material);
+
     /** Every value of every cycle so far, by cycle, then by probe. */
     const std::vector<Value> &
     values() const
     {
       return all_values;
+    }
+
+    /** Every value of every step so far, by step, then by probe. */
+    const std::vector<Value> &
+    step_values() const
+    {
+      return all_step_values;
     }
 
     /**
@@ -107,9 +129,31 @@ namespace dualcontact
     void
     write_csv(const std::string &filename) const;
 
+    /**
+     * Write step_values() as CSV: one row per step and probe, the columns
+     * step, time, then those of write_csv() from probe on. Call on one
+     * rank.
+     */
+    void
+    write_step_csv(const std::string &filename) const;
+
   private:
+    /** The values at every point for `solution`. Collective. */
+    std::vector<Value>
+    measure(const Mapping<dim>                  &mapping,
+            const DoFHandler<dim>               &dof_handler,
+            const TrilinosWrappers::MPI::Vector &solution,
+            const MaterialParameters            &material) const;
+
+    /** The columns from probe on: their header, or one value's row. */
+    static void
+    write_header(std::ostream &csv);
+    static void
+    write_row(std::ostream &csv, const Value &value);
+
     std::vector<Point<dim>> points;
     std::vector<Value>      all_values;
+    std::vector<Value>      all_step_values;
   };
 } // namespace dualcontact
 

@@ -164,6 +164,10 @@ namespace dualcontact
     unsigned int          n_steps = 1;
     double                time    = 1.;
     std::array<double, 3> obstacle_displacement{}; // U(t)
+    // the mean displacement of each loaded boundary part ('fixed',
+    // 'traction'), by boundary id: with the reactions, the force-
+    // displacement loop of a path
+    std::map<types::boundary_id, std::array<double, 3>> boundary_displacement;
     // sum_s m_s l2_s . (slip of the step), in this step and up to it
     double dissipation       = 0.;
     double dissipation_total = 0.;

@@ -454,8 +454,9 @@ namespace dualcontact
       register_report_quantity<ContactArea>("contact area");
 
     /**
-     * An obstacle moved by <Obstacle/Displacement>: obstacle_force_x, _y
-     * (_z), the force of the body on the obstacle.
+     * An obstacle moved by <Obstacle/Displacement>, or a load path of
+     * several steps: obstacle_force_x, _y (_z), the force of the body on
+     * the obstacle.
      */
     template <int dim>
     class ObstacleForce : public ReportQuantity<dim>
@@ -464,15 +465,17 @@ namespace dualcontact
       using ReportQuantity<dim>::ReportQuantity;
 
       static bool
-      has(const Parameters &, const Scene<dim> &scene)
+      has(const Parameters &parameters, const Scene<dim> &scene)
       {
-        return scene.effects().contact && scene.obstacle_moves();
+        return scene.effects().contact &&
+               (scene.obstacle_moves() ||
+                parameters.load_path.step_times().size() > 1);
       }
 
       void
       csv_entries(const CycleResult &r, TableEntries &t) const override
       {
-        // the force of the body on the obstacle (an indenter's reaction)
+        // the force of the body on the obstacle
         const char *axes[] = {"x", "y", "z"};
         for (unsigned int c = 0; c < dim; ++c)
           t.add(460,

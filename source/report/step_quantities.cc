@@ -15,7 +15,8 @@ namespace dualcontact
     /**
      * A load path of several steps: step, time; with friction dissipation,
      * dissipation_total; with an obstacle moved by <Obstacle/Displacement>
-     * obstacle_displacement_x, _y (_z).
+     * obstacle_displacement_x, _y (_z); the mean displacement of each loaded
+     * boundary part i, displacement_i_x, _y (_z).
      */
     template <int dim>
     class LoadStep : public ReportQuantity<dim>
@@ -32,6 +33,7 @@ namespace dualcontact
       void
       csv_entries(const CycleResult &r, TableEntries &t) const override
       {
+        static const char *axes[] = {"x", "y", "z"};
         t.add(4, "step", r.step.step);
         t.add(6, "time", r.step.time);
         if (this->scene.effects().contact &&
@@ -42,12 +44,16 @@ namespace dualcontact
           }
         if (this->scene.obstacle_moves())
           {
-            const char *axes[] = {"x", "y", "z"};
             for (unsigned int c = 0; c < dim; ++c)
               t.add(465,
                     std::string("obstacle_displacement_") + axes[c],
                     r.step.obstacle_displacement[c]);
           }
+        for (const auto &[id, u] : r.step.boundary_displacement)
+          for (unsigned int c = 0; c < dim; ++c)
+            t.add(455,
+                  "displacement_" + std::to_string(id) + "_" + axes[c],
+                  u[c]);
       }
     };
 
