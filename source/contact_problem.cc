@@ -213,6 +213,7 @@ namespace dualcontact
         carried                    = true;
         result.transfer.warm_start = true;
         previous_u                 = solution;
+        same_stiffness             = true;
       }
     carried_from_step = true;
     if (scene.effects().contact)
@@ -372,6 +373,7 @@ namespace dualcontact
     TransferRecord record;
     carried           = false;
     carried_from_step = false;
+    same_stiffness    = false;
     if (!transfer)
       return record;
     TimerOutput::Scope t(computing_timer, "refine mesh");
@@ -468,8 +470,21 @@ namespace dualcontact
     if (scene.effects().contact && parameters.solver.time_reference_solve)
       {
         TimerOutput::Scope r(computing_timer, "reference linear solve");
-        record.time_reference = newton.time_reference_solve(
-          contact_system(), contact_set, v, record.reference_iterations);
+        // with a solver of its own: the contact solver's preconditioner
+        // serves the next step of a load path
+        ElasticSolver<dim> reference(parameters.solver,
+                                     parameters.material.poissons_ratio);
+        reference.set_near_null_space(mapping,
+                                      dof_handler,
+                                      system_matrix,
+                                      scene.center(),
+                                      scene.characteristic_length());
+        record.time_reference =
+          newton.time_reference_solve(contact_system(),
+                                      contact_set,
+                                      v,
+                                      reference,
+                                      record.reference_iterations);
       }
     return record;
   }
@@ -538,7 +553,8 @@ namespace dualcontact
                          chi,
                          1.,
                          &free_motions,
-                         previous_size};
+                         previous_size,
+                         same_stiffness};
     return system;
   }
 

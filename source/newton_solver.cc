@@ -54,9 +54,9 @@ namespace dualcontact
 
   template <int dim>
   void
-  NewtonSolver<dim>::reset()
+  NewtonSolver<dim>::reset(const bool keep_preconditioner)
   {
-    amg_valid         = false;
+    amg_valid         = amg_valid && keep_preconditioner;
     roundoff_floor    = 0.;
     roundoff_reported = false;
   }
@@ -231,8 +231,9 @@ namespace dualcontact
     types::global_dof_index n_slipping = 0;
     for (const unsigned char s : status)
       n_slipping += (s == slip);
-    const bool same_matrix =
-      amg_valid && n_changed == 0 && Utilities::MPI::sum(n_slipping, comm) == 0;
+    const bool same_matrix = amg_valid && n_changed == 0 &&
+                             amg_chi_scale == system->chi_scale &&
+                             Utilities::MPI::sum(n_slipping, comm) == 0;
     // ... or when more than 20 nodes got stiffer terms than the hierarchy
     // knows: each such term (r m_s, about r_rel times the element's
     // stiffness) puts an outlying eigenvalue into the preconditioned
@@ -248,8 +249,9 @@ namespace dualcontact
     if (rebuild)
       {
         linear_solver.initialize(system->stiffness);
-        amg_status = status;
-        amg_valid  = true;
+        amg_status    = status;
+        amg_valid     = true;
+        amg_chi_scale = system->chi_scale;
       }
     return rebuild;
   }
@@ -560,6 +562,7 @@ namespace dualcontact
                 statistics.times.amg_setup += lap(clock);
                 amg_status        = status;
                 amg_valid         = true;
+                amg_chi_scale     = system->chi_scale;
                 record.amg_setups = 1;
               }
           }
@@ -600,6 +603,7 @@ namespace dualcontact
     const ContactSystem                 &system_,
     const ContactSet<dim>               &contact,
     const TrilinosWrappers::MPI::Vector &v,
+    ElasticSolver<dim>                  &solver,
     unsigned int                        &iterations)
   {
     system = &system_;
@@ -607,13 +611,12 @@ namespace dualcontact
     add_contact_terms(contact);
 
     Timer timer(v.get_mpi_communicator(), true);
-    linear_solver.initialize(system->stiffness);
+    solver.initialize(system->stiffness);
     TrilinosWrappers::MPI::Vector x(system->load);
     x          = 0;
-    iterations = linear_solver.solve(system->stiffness, x, system->load);
+    iterations = solver.solve(system->stiffness, x, system->load);
     timer.stop();
     remove_contact_terms();
-    amg_valid = false; // the preconditioner now belongs to another matrix
     return timer.wall_time();
   }
 

@@ -365,7 +365,9 @@ namespace dualcontact
                              const bool                     update_threshold,
                              const double                   threshold_tolerance)
   {
-    newton.reset(); // a new system: build the preconditioner afresh
+    // a new system: the preconditioner is built afresh unless K is the
+    // previous solve's
+    newton.reset(system.same_stiffness);
     // this solve's copy of the system: its proximal weight may be lowered
     ContactSystem                 step_system = system;
     ContactStatistics             statistics;

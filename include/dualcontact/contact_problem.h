@@ -407,6 +407,8 @@ namespace dualcontact
     bool carried = false;
     // ... or from the previous load step
     bool carried_from_step = false;
+    // ... on the same mesh: K is the matrix of the previous step's solve
+    bool same_stiffness = false;
     // the friction history: the obstacle's translation at the previous
     // step, and the energy dissipated so far
     Tensor<1, dim> previous_obstacle_displacement;

@@ -69,6 +69,10 @@ namespace dualcontact
     // unloaded) stops at the round-off of the path's scale (doc/theory.md
     // §11). Zero on a first step and in a static scene.
     SolutionSize previous;
+    // K is the matrix of the previous contact solve (a later step of a
+    // load path on the same mesh): the Newton iteration may start with the
+    // preconditioner it built then.
+    bool same_stiffness = false;
 
     /** The proximal weight of the step [stress/length^2]. */
     double

@@ -38,11 +38,15 @@ namespace dualcontact
                  ElasticSolver<dim>     &linear_solver);
 
     /**
-     * Forget the AMG hierarchy and the round-off floor: the next
-     * minimisation works on a new system.
+     * Forget the round-off floor, and the AMG hierarchy unless
+     * `keep_preconditioner`: the next minimisation works on a new system.
+     * A later step of a load path on the same mesh has the same K, and the
+     * hierarchy the previous step built for K plus its contact terms
+     * serves as long as the statuses stay near those it was built for
+     * (update_preconditioner()).
      */
     void
-    reset();
+    reset(const bool keep_preconditioner = false);
 
     /**
      * Minimise M_k(v) = 1/2 a(v,v) - L(v) + (chi/2)|v - v^k|_M^2
@@ -69,13 +73,15 @@ namespace dualcontact
     /**
      * For benchmarks: the wall time [s] of one linear solve on the current
      * mesh: AMG set-up plus CG (linear tolerance) on the Newton matrix at
-     * the current contact statuses, with right-hand side b. `iterations`
-     * gets the CG count.
+     * the current contact statuses, with right-hand side b, by `solver`
+     * (one of its own, so that the Newton iteration's hierarchy survives
+     * for the next step of a load path). `iterations` gets the CG count.
      */
     double
     time_reference_solve(const ContactSystem                 &system,
                          const ContactSet<dim>               &contact,
                          const TrilinosWrappers::MPI::Vector &v,
+                         ElasticSolver<dim>                  &solver,
                          unsigned int                        &iterations);
 
   private:
@@ -142,6 +148,7 @@ namespace dualcontact
     // last built
     std::vector<unsigned char> amg_status;
     bool                       amg_valid                 = false;
+    double                     amg_chi_scale             = 1.; // of its K
     unsigned int               cg_iterations_after_setup = 0;
     unsigned int               last_cg_iterations        = 0;
     // the round-off floor of the gradient found since reset(), over F_ref,
