@@ -660,11 +660,14 @@ namespace dualcontact
 
     // the step's line, at every verbosity
     const CycleResult       &r     = result;
-    std::vector<std::string> items = {
-      "t = " + significant(r.step.time, 6),
-      "Uzawa " + std::to_string(r.solve.uzawa_steps),
-      "Newton " + std::to_string(r.solve.newton_steps),
-      "CG " + std::to_string(r.solve.cg_iterations)};
+    std::vector<std::string> items = {"t = " + significant(r.step.time, 6)};
+    // a mesh adapted for the step
+    if (parameters.load_path.adapt_at_every_step && r.step.step > 1)
+      items.push_back(std::to_string(r.mesh.n_dofs) + " DoFs");
+    items.insert(items.end(),
+                 {"Uzawa " + std::to_string(r.solve.uzawa_steps),
+                  "Newton " + std::to_string(r.solve.newton_steps),
+                  "CG " + std::to_string(r.solve.cg_iterations)});
     if (scene.effects().contact)
       items.push_back("contact force " + significant(r.zone.contact_force, 6));
     if (loops_of(parameters, scene).friction)

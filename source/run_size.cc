@@ -1,9 +1,11 @@
 #include <dualcontact/input_error.h>
+#include <dualcontact/parameter_helpers.h>
 #include <dualcontact/refinement_indicator.h>
 #include <dualcontact/run_size.h>
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -118,10 +120,23 @@ namespace dualcontact
       if (r.n_cycles > 1)
         entries.push_back(
           setting("Refinement/Number of cycles", std::to_string(r.n_cycles)));
-      if (r.n_cycles > 1 &&
+      const LoadPathParameters &path    = parameters.load_path;
+      const std::size_t         n_steps = path.step_times().size();
+      const bool adapts = path.adapt_at_every_step && n_steps > 1;
+      if ((r.n_cycles > 1 || adapts) &&
           !refinement_indicator_kind(r.strategy).refines_every_cell())
-        entries.push_back(
-          setting("Refinement/Refine fraction", number(r.refine_fraction)));
+        entries.push_back(setting("Refinement/Refine fraction",
+                                  number_text(r.refine_fraction)));
+      if (adapts)
+        {
+          entries.push_back(setting("Refinement/Coarsen fraction",
+                                    number_text(r.coarsen_fraction)));
+          entries.push_back(setting("Load path/Adapt at every step", "true"));
+          entries.push_back(
+            path.times.empty() ?
+              setting("Load path/Number of steps", std::to_string(n_steps)) :
+              setting("Load path/Times", std::to_string(n_steps) + " times"));
+        }
       std::string text;
       for (const std::string &entry : entries)
         text += (text.empty() ? "" : ", ") + entry;
@@ -142,9 +157,22 @@ namespace dualcontact
                        children :
                        1. + (children - 1.) * refinement.refine_fraction;
 
+    // the load steps that adapt the mesh once each, refining and
+    // coarsening: the mesh grows unless the coarsened cells make up for
+    // the refined ones
+    const LoadPathParameters &path    = parameters.load_path;
+    const std::size_t         n_steps = path.step_times().size();
+    const double              step_growth =
+      std::max(1.,
+               1. + (children - 1.) * refinement.refine_fraction -
+                 (1. - 1. / children) * refinement.coarsen_fraction);
+
     RunSize size;
-    size.cycle         = refinement.n_cycles - 1;
-    size.cells         = initial_cells * std::pow(growth, size.cycle);
+    size.cycle       = refinement.n_cycles - 1;
+    size.adapts      = path.adapt_at_every_step ? n_steps - 1 : 0;
+    size.step_growth = step_growth;
+    size.cells       = initial_cells * std::pow(growth, size.cycle) *
+                 std::pow(step_growth, size.adapts);
     const double nodes = std::pow(std::pow(size.cells, 1. / dim) + 1., dim);
     size.dofs          = dim * nodes;
     size.memory        = n_ranks * bytes_per_rank +
@@ -224,12 +252,32 @@ namespace dualcontact
       std::cerr << "dualcontact: warning: the run needs more than half of "
                    "the memory of this machine: "
                 << describe(size, true) << "." << std::endl;
+    // refining a fraction r of the cells adds (2^dim - 1) r of them,
+    // coarsening c removes (1 - 2^-dim) c: c = (2^dim - 1) / (1 - 2^-dim) r
+    // = 2^dim r keeps the mesh's size
+    const unsigned int children = 1u << parameters.geometry.dimension;
+    if (size.adapts > 0 && size.step_growth > 1.05 &&
+        Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cerr << "dualcontact: warning: <Load path/Adapt at every step> "
+                   "grows the mesh by a factor of about "
+                << number_text(size.step_growth) << " per step, to about "
+                << number(size.cells)
+                << " cells at the last step; a <Refinement/Coarsen fraction> "
+                   "of "
+                << children
+                << " times <Refinement/Refine fraction> keeps it near its size "
+                   "(e.g. "
+                << number_text(0.4 / children) << " and 0.4)." << std::endl;
   }
 
   std::string
   RunSizeCheck::describe(const RunSize &size, const bool exact) const
   {
     return "its finest mesh (cycle " + std::to_string(size.cycle) +
+           (size.adapts > 0 ?
+              ", then adapted at each of " + std::to_string(size.adapts) +
+                " later load steps" :
+              "") +
            ") would have " + (exact ? "about " : "at least ") +
            number(size.cells) + " cells and " + number(size.dofs) +
            " DoFs and need " + (exact ? "about " : "at least ") +

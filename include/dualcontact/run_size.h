@@ -16,10 +16,12 @@ namespace dualcontact
   /** The estimated size of the finest mesh of a run. */
   struct RunSize
   {
-    unsigned int cycle  = 0;  // the cycle of the finest mesh (the last)
-    double       cells  = 0.; // active cells
-    double       dofs   = 0.; // degrees of freedom (Q1, dim per node)
-    double       memory = 0.; // peak resident memory of all ranks [bytes]
+    unsigned int cycle       = 0;  // the cycle of the finest mesh (the last)
+    unsigned int adapts      = 0;  // then adapted before each later load step
+    double       step_growth = 1.; // the cells' growth per such adaption
+    double       cells       = 0.; // active cells
+    double       dofs        = 0.; // degrees of freedom (Q1, dim per node)
+    double       memory      = 0.; // peak resident memory of all ranks [bytes]
   };
 
   /**
@@ -27,7 +29,10 @@ namespace dualcontact
    * initial global refinement and the pre-refinement) has `initial_cells`
    * cells: global refinement multiplies the cells by 2^dim per cycle,
    * adaptive refinement by about 1 + (2^dim - 1) * <Refinement/Refine
-   * fraction> (coarsening ignored); a Q1 mesh has about (cells^(1/dim) +
+   * fraction> (coarsening ignored); with <Load path/Adapt at every step>
+   * each later step adapts it once more, by 1 + (2^dim - 1) r - (1 -
+   * 2^-dim) c with the refine and coarsen fractions r, c (at least 1:
+   * p4est coarsens only whole families); a Q1 mesh has about (cells^(1/dim) +
    * 1)^dim nodes (exact for a cube of n^dim cells). The memory follows from
    * measurements (run_size.cc).
    */
@@ -86,7 +91,10 @@ namespace dualcontact
     void
     check(const double initial_cells, const bool exact) const;
 
-    /** Warn if the run needs more than half of the memory. */
+    /**
+     * Warn if the run needs more than half of the memory, or if a load path
+     * that adapts the mesh at every step makes it grow from step to step.
+     */
     void
     warn(const double initial_cells) const;
 

@@ -46,7 +46,11 @@ namespace dualcontact
       "mesh serves every later step. true: before every later step the mesh "
       "is adapted once (<Refinement/Strategy>, refine and coarsen fractions) "
       "from the solution of the previous step, which is carried across with "
-      "the multipliers and the friction history.");
+      "the multipliers and the friction history. The mesh keeps about its "
+      "size when <Refinement/Coarsen fraction> is 2^dim times <Refinement/"
+      "Refine fraction> (e.g. 0.1 and 0.4 in 2D); with less coarsening it "
+      "grows at every step, and a path whose last mesh would not fit in the "
+      "memory is refused before it starts.");
     declarer.declare_entry(
       "Output interval",
       "1",
