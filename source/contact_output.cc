@@ -1,5 +1,9 @@
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_tools.h>
+
 #include <deal.II/grid/reference_cell.h>
 
 #include <dualcontact/contact_output.h>
@@ -142,6 +146,7 @@ namespace dualcontact
   template <int dim>
   void
   ContactBoundaryOutput<dim>::build_patches(
+    const Mapping<dim>                  &mapping,
     const DoFHandler<dim>               &dof_handler,
     const std::set<types::boundary_id>  &contact_ids,
     const ContactSet<dim>               &contact_set,
@@ -220,10 +225,18 @@ namespace dualcontact
       }
     const unsigned int status_row = friction ? 3 : 2;
 
-    // one patch per contact face of a locally owned cell
+    // One patch per contact face of a locally owned cell, subdivided k
+    // times in each direction for FE_Q(k): its points are the face's
+    // support points in lexicographic order, where the mapping puts them
+    // (on the curve of a curved face).
+    const FiniteElement<dim>       &fe = dof_handler.get_fe();
+    const unsigned int              k  = fe.degree;
+    const std::vector<unsigned int> lexicographic =
+      FETools::hierarchic_to_lexicographic_numbering<dim - 1>(k);
+    std::map<types::global_dof_index, Point<dim>> where;
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, where);
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     patches.clear();
-    constexpr unsigned int n_vertices =
-      GeometryInfo<dim - 1>::vertices_per_cell;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
@@ -233,20 +246,25 @@ namespace dualcontact
               const auto                       face = cell->face(f);
               DataOutBase::Patch<dim - 1, dim> patch;
               patch.reference_cell = ReferenceCells::get_hypercube<dim - 1>();
-              patch.n_subdivisions = 1;
+              patch.n_subdivisions = k;
               patch.patch_index    = patches.size();
-              patch.points_are_available = false;
-              patch.data.reinit(names.size(), n_vertices);
-              for (unsigned int v = 0; v < n_vertices; ++v)
+              for (const unsigned int v : face->vertex_indices())
+                patch.vertices[v] = face->vertex(v);
+              // the data, then the points' coordinates
+              patch.points_are_available = true;
+              patch.data.reinit(names.size() + dim, lexicographic.size());
+              face->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
                 {
-                  patch.vertices[v] = face->vertex(v);
-                  for (unsigned int q = 0; q < n_packed; ++q)
-                    patch.data(q, v) =
-                      packed[q / dim](face->vertex_dof_index(v, q % dim));
-                  patch.data(status_row, v) -= 1.;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    patch.data(n_packed + d, v) =
-                      displacement(face->vertex_dof_index(v, d));
+                  const auto [c, j] = fe.face_system_to_component_index(i, f);
+                  const unsigned int            p   = lexicographic[j];
+                  const types::global_dof_index dof = face_dofs[i];
+                  for (unsigned int q = c; q < n_packed; q += dim)
+                    patch.data(q, p) = packed[q / dim](dof);
+                  if (status_row % dim == c)
+                    patch.data(status_row, p) -= 1.;
+                  patch.data(n_packed + c, p)     = displacement(dof);
+                  patch.data(names.size() + c, p) = where.at(dof)[c];
                 }
               patches.push_back(std::move(patch));
             }

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/dofs/dof_accessor.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -63,8 +64,8 @@ namespace dualcontact
       // adaptive meshes depend on the number of ranks.
       , triangulation(mpi_communicator,
                       Triangulation<dim>::limit_level_difference_at_vertices)
-      , mapping(1)
-      , fe(FE_Q<dim>(1), dim)
+      , mapping(parameters.discretization.degree)
+      , fe(FE_Q<dim>(parameters.discretization.degree), dim)
       , dof_handler(triangulation)
       , elastic_solver(parameters.solver, parameters.material.poissons_ratio)
       , newton(parameters.solver, elastic_solver)
@@ -281,6 +282,20 @@ namespace dualcontact
     });
     size.check(triangulation.n_global_active_cells(), true);
     size.warn(triangulation.n_global_active_cells());
+    // a mapping of degree k follows the manifolds: a mesh file without them
+    // stays the polygon of its vertices
+    const GeometryParameters &geometry = parameters.geometry;
+    if (parameters.discretization.degree > 1 &&
+        geometry.type == GeometryType::mesh_file &&
+        geometry.manifolds.empty() &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "dualcontact: warning: <Geometry/Manifolds> is empty: the "
+                   "boundary of the mesh file stays the polygon of its "
+                   "faces at <Discretization/Polynomial degree> "
+                << parameters.discretization.degree
+                << " as at 1; name its curved parts there for the mapping to "
+                   "follow them."
+                << std::endl;
     scene.check_rigid_motions(triangulation);
     check_initial_position(triangulation, scene);
     // a probe outside the body is bad input: found before the first solve
@@ -293,6 +308,11 @@ namespace dualcontact
   {
     TimerOutput::Scope t(computing_timer, "setup system");
     dof_handler.distribute_dofs(fe);
+    // the dim DoFs of each support point next to each other, as the AMG
+    // takes them (elasticity.cc); FE_Q(1) numbers them so already, FE_Q(k)
+    // numbers an edge's or face's inner DoFs component by component
+    if (fe.degree > 1)
+      DoFRenumbering::support_point_wise(dof_handler);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 

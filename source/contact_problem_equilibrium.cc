@@ -174,25 +174,23 @@ namespace dualcontact
     for (unsigned int k = 0; k < n_rotations; ++k)
       {
         TrilinosWrappers::MPI::Vector rotation(owned, mpi_communicator);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const unsigned int v : cell->vertex_indices())
-              {
-                const Tensor<1, dim> r = cell->vertex(v) - origin;
-                Tensor<1, 3>         u; // (e_k x r), r in 3D
-                const unsigned int   axis = dim == 2 ? 2 : k;
-                const unsigned int   a = (axis + 1) % 3, b = (axis + 2) % 3;
-                const double r3[3] = {r[0], r[1], dim == 3 ? r[dim - 1] : 0.};
-                u[a]               = -r3[b];
-                u[b]               = r3[a];
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    const auto dof = cell->vertex_dof_index(v, c);
-                    if (owned.is_element(dof))
-                      rotation[dof] = u[c];
-                  }
-              }
-        rotation.compress(VectorOperation::insert);
+        const unsigned int            axis = dim == 2 ? 2 : k;
+        interpolate_field<dim>(
+          mapping,
+          dof_handler,
+          [&origin, axis](const Point<dim> &x) {
+            const Tensor<1, dim> r   = x - origin;
+            const double       r3[3] = {r[0], r[1], dim == 3 ? r[dim - 1] : 0.};
+            const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            Tensor<1, 3>       u; // e_axis x r, r in 3D
+            u[a] = -r3[b];
+            u[b] = r3[a];
+            Tensor<1, dim> value;
+            for (unsigned int c = 0; c < dim; ++c)
+              value[c] = u[c];
+            return value;
+          },
+          rotation);
         moment[dim == 2 ? 2 : k] = system_rhs * rotation;
       }
     Tensor<1, 3> m3;

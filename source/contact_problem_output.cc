@@ -161,7 +161,8 @@ namespace dualcontact
       {
         ContactBoundaryOutput<dim> boundary;
         boundary.set_flags(flags);
-        boundary.build_patches(dof_handler,
+        boundary.build_patches(mapping,
+                               dof_handler,
                                scene.ids_with(BoundaryCondition::contact),
                                contact_set,
                                solution,

@@ -93,27 +93,16 @@ namespace dualcontact
     for (unsigned int k = 0; k < eigenvalues.size(); ++k)
       {
         TrilinosWrappers::MPI::Vector w(locally_owned_dofs, mpi_communicator);
-        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(dofs);
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  Tensor<1, dim> m;
-                  for (unsigned int i = 0; i < n; ++i)
-                    m += eigenvectors(i, k) *
-                         scene.rigid_motion(i, cell->vertex(v));
-                  for (unsigned int c = 0; c < dim; ++c)
-                    {
-                      const types::global_dof_index dof =
-                        dofs[fe.component_to_system_index(c, v)];
-                      if (locally_owned_dofs.is_element(dof))
-                        w[dof] = m[c];
-                    }
-                }
-            }
-        w.compress(VectorOperation::insert);
+        interpolate_field<dim>(
+          mapping,
+          dof_handler,
+          [&](const Point<dim> &x) {
+            Tensor<1, dim> m;
+            for (unsigned int i = 0; i < n; ++i)
+              m += eigenvectors(i, k) * scene.rigid_motion(i, x);
+            return m;
+          },
+          w);
         homogeneous_constraints.distribute(w);
         // a translation is exact in the constrained space: no solve
         double rotation = 0.;

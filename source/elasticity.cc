@@ -302,6 +302,30 @@ namespace dualcontact
   }
 
   template <int dim>
+  void
+  interpolate_field(
+    const Mapping<dim>                                      &mapping,
+    const DoFHandler<dim>                                   &dof_handler,
+    const std::function<Tensor<1, dim>(const Point<dim> &)> &field,
+    TrilinosWrappers::MPI::Vector                           &v)
+  {
+    const FiniteElement<dim>      &fe          = dof_handler.get_fe();
+    const std::vector<Point<dim>> &unit_points = fe.get_unit_support_points();
+    const IndexSet                &owned       = v.locally_owned_elements();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (owned.is_element(dofs[i]))
+              v[dofs[i]] = field(mapping.transform_unit_to_real_cell(
+                cell, unit_points[i]))[fe.system_to_component_index(i).first];
+        }
+    v.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
   std::unique_ptr<Epetra_MultiVector>
   rigid_body_modes(const Mapping<dim>                   &mapping,
                    const DoFHandler<dim>                &dof_handler,
@@ -519,6 +543,11 @@ namespace dualcontact
     const AffineConstraints<double> &,                                                \
     const AffineConstraints<double> &,                                                \
     const TrilinosWrappers::MPI::Vector &);                                           \
+  template void interpolate_field<dim>(                                               \
+    const Mapping<dim> &,                                                             \
+    const DoFHandler<dim> &,                                                          \
+    const std::function<Tensor<1, dim>(const Point<dim> &)> &,                        \
+    TrilinosWrappers::MPI::Vector &);                                                 \
   template std::unique_ptr<Epetra_MultiVector> rigid_body_modes<dim>(                 \
     const Mapping<dim> &,                                                             \
     const DoFHandler<dim> &,                                                          \

@@ -172,6 +172,7 @@ namespace dualcontact
     LoadParameters::declare_parameters(declarer);
     ObstacleParameters::declare_parameters(declarer);
     FrictionParameters::declare_parameters(declarer);
+    DiscretizationParameters::declare_parameters(declarer);
     SolverParameters::declare_parameters(declarer);
     RefinementParameters::declare_parameters(declarer);
     OutputParameters::declare_parameters(declarer);
@@ -188,6 +189,7 @@ namespace dualcontact
     loads.parse_parameters(prm);
     obstacle.parse_parameters(prm);
     friction.parse_parameters(prm);
+    discretization.parse_parameters(prm);
     solver.parse_parameters(prm);
     refinement.parse_parameters(prm);
     output.parse_parameters(prm);

@@ -173,7 +173,9 @@ namespace dualcontact
     size.step_growth = step_growth;
     size.cells       = initial_cells * std::pow(growth, size.cycle) *
                  std::pow(step_growth, size.adapts);
-    const double nodes = std::pow(std::pow(size.cells, 1. / dim) + 1., dim);
+    // FE_Q(k): k intervals of nodes along each cell edge
+    const double k     = parameters.discretization.degree;
+    const double nodes = std::pow(k * std::pow(size.cells, 1. / dim) + 1., dim);
     size.dofs          = dim * nodes;
     size.memory        = n_ranks * bytes_per_rank +
                   (dim == 2 ? bytes_per_dof_2d : bytes_per_dof_3d) * size.dofs;

@@ -11,6 +11,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/fe/mapping.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -68,9 +70,10 @@ namespace dualcontact
 
   /**
    * The contact fields on the faces of Gamma_C, for ParaView: one patch per
-   * contact face of a locally owned cell, the fields at its vertices (the
-   * contact nodes; a hanging node has the interpolation of its masters, a
-   * node whose every component is prescribed status -1). Fields:
+   * contact face of a locally owned cell, the fields at its support points
+   * (the contact nodes, k + 1 per edge for FE_Q(k), placed by `mapping`; a
+   * hanging node has the interpolation of its masters, a node whose every
+   * component is prescribed status -1). Fields:
    * contact_pressure (l1), gap (g0 - u_n), contact_status (-1 not a contact
    * node, 0 separated, 1 in contact (sticking), 2 slipping), the vectors
    * displacement, normal (n_s) and tangential_slip (u_t), and with friction
@@ -81,7 +84,8 @@ namespace dualcontact
   {
   public:
     void
-    build_patches(const DoFHandler<dim>               &dof_handler,
+    build_patches(const Mapping<dim>                  &mapping,
+                  const DoFHandler<dim>               &dof_handler,
                   const std::set<types::boundary_id>  &contact_ids,
                   const ContactSet<dim>               &contact_set,
                   const TrilinosWrappers::MPI::Vector &displacement,

@@ -22,6 +22,7 @@
 #include <Epetra_MultiVector.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 
 namespace dualcontact
@@ -69,6 +70,21 @@ namespace dualcontact
                     const AffineConstraints<double> &constraints,
                     const AffineConstraints<double> &hanging_node_constraints,
                     const TrilinosWrappers::MPI::Vector &solution);
+
+  /**
+   * The nodal vector of the displacement field `field` (a function of the
+   * point): its value at the support point of every DoF of the locally
+   * owned cells (mapped with `mapping`, so on the curve of a curved cell),
+   * in the owned entries of `v`. At any degree this is the interpolant; a
+   * rigid motion is exact in it.
+   */
+  template <int dim>
+  void
+  interpolate_field(
+    const Mapping<dim>                                      &mapping,
+    const DoFHandler<dim>                                   &dof_handler,
+    const std::function<Tensor<1, dim>(const Point<dim> &)> &field,
+    TrilinosWrappers::MPI::Vector                           &v);
 
   /**
    * The rigid-body modes of the displacement space (dim translations and

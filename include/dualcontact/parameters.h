@@ -339,6 +339,17 @@ namespace dualcontact
   const NameTable<Verbosity> &
   verbosity_names();
 
+  /** The finite element and the mapping. */
+  struct DiscretizationParameters
+  {
+    unsigned int degree = 1; // of FE_Q and MappingQ
+
+    static void
+    declare_parameters(EntryDeclarer &declarer);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
   /** What is written where. */
   struct OutputParameters
   {
@@ -412,17 +423,18 @@ namespace dualcontact
    */
   struct Parameters
   {
-    GeometryParameters      geometry;
-    MaterialParameters      material;
-    BoundaryParameters      boundary;
-    LoadParameters          loads;
-    ObstacleParameters      obstacle;
-    FrictionParameters      friction;
-    SolverParameters        solver;
-    RefinementParameters    refinement;
-    OutputParameters        output;
-    ExactSolutionParameters exact;
-    LoadPathParameters      load_path;
+    GeometryParameters       geometry;
+    MaterialParameters       material;
+    BoundaryParameters       boundary;
+    LoadParameters           loads;
+    ObstacleParameters       obstacle;
+    FrictionParameters       friction;
+    SolverParameters         solver;
+    RefinementParameters     refinement;
+    OutputParameters         output;
+    ExactSolutionParameters  exact;
+    LoadPathParameters       load_path;
+    DiscretizationParameters discretization;
 
     static void
     declare_parameters(EntryDeclarer &declarer);

@@ -20,7 +20,7 @@ namespace dualcontact
     unsigned int adapts      = 0;  // then adapted before each later load step
     double       step_growth = 1.; // the cells' growth per such adaption
     double       cells       = 0.; // active cells
-    double       dofs        = 0.; // degrees of freedom (Q1, dim per node)
+    double       dofs        = 0.; // degrees of freedom (dim per node)
     double       memory      = 0.; // peak resident memory of all ranks [bytes]
   };
 
@@ -32,9 +32,9 @@ namespace dualcontact
    * fraction> (coarsening ignored); with <Load path/Adapt at every step>
    * each later step adapts it once more, by 1 + (2^dim - 1) r - (1 -
    * 2^-dim) c with the refine and coarsen fractions r, c (at least 1:
-   * p4est coarsens only whole families); a Q1 mesh has about (cells^(1/dim) +
-   * 1)^dim nodes (exact for a cube of n^dim cells). The memory follows from
-   * measurements (run_size.cc).
+   * p4est coarsens only whole families); a mesh of FE_Q(k) has about (k
+   * cells^(1/dim) + 1)^dim nodes (exact for a cube of n^dim cells). The
+   * memory follows from measurements of Q1 runs per DoF (run_size.cc).
    */
   RunSize
   estimate_run_size(const Parameters  &parameters,

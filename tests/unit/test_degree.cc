@@ -1,0 +1,95 @@
+// Elements of degree k (<Discretization/Polynomial degree>): the patch tests
+// are exact at every degree, in 2D and 3D, without and with friction. Every
+// assertion is on a value reduced over all ranks.
+
+#include <deal.II/base/mpi.h>
+
+#include <dualcontact/contact_problem.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "scene_run.h"
+#include "test_tools.h"
+
+using namespace dualcontact;
+using namespace dualcontact_test;
+
+namespace
+{
+  std::string
+  degree(const unsigned int k)
+  {
+    return "subsection Discretization\n  set Polynomial degree = " +
+           std::to_string(k) + "\nend\n";
+  }
+
+  /** The largest |l1_s - p| and |l2_s - q| over all ranks' contact nodes. */
+  template <int dim>
+  std::pair<double, double>
+  deviation(const SceneRun<dim> &run, const double p, const Tensor<1, dim> &q)
+  {
+    const ContactSet<dim> &contact = run.problem->contact();
+    double                 l1 = 0., l2 = 0.;
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      {
+        l1 = std::max(l1, std::abs(contact.l1[s] - p));
+        if (contact.friction)
+          {
+            Tensor<1, dim> traction;
+            for (unsigned int k = 0; k + 1 < dim; ++k)
+              traction += contact.l2[s][k] * contact.nodes[s].tangents[k];
+            l2 = std::max(l2, (traction - q).norm());
+          }
+      }
+    return {Utilities::MPI::max(l1, run.comm),
+            Utilities::MPI::max(l2, run.comm)};
+  }
+} // namespace
+
+TEST_CASE("Patch test at degree 1, 2 and 3: every nodal pressure equals the "
+          "applied pressure, every node in contact",
+          "[degree]")
+{
+  for (const unsigned int k : {1u, 2u, 3u})
+    {
+      const Run          run("patch.prm", degree(k));
+      const CycleResult &r = run.last();
+      const auto [l1, l2]  = deviation(run, 1., Tensor<1, 2>());
+      INFO("degree " << k << ": " << r.solve.n_contact_nodes
+                     << " contact nodes, largest |l1 - 1| " << l1);
+      // 16 faces on the plane at the last mesh: 16 k + 1 support points
+      CHECK(r.solve.n_contact_nodes == 16 * k + 1);
+      CHECK(r.solve.n_active == r.solve.n_contact_nodes);
+      CHECK(std::abs(r.zone.contact_force - 2.) <= 1e-10 * 2.);
+      CHECK(l1 <= 1e-8);
+    }
+}
+
+TEST_CASE("3D friction patch at degree 2 and 3: a uniform pressure and shear "
+          "below F p stick everywhere with the exact tractions",
+          "[degree]")
+{
+  for (const unsigned int k : {2u, 3u})
+    {
+      const SceneRun<3>  run("patch_3d.prm",
+                            degree(k) + "subsection Solver\n  set Uzawa "
+                                         "tolerance = 1e-11\nend\n");
+      const CycleResult &r = run.last();
+      Tensor<1, 3>       q;
+      q[0]                = 0.2;
+      q[1]                = 0.1;
+      const auto [l1, l2] = deviation(run, 1., q);
+      INFO("degree " << k << ": error " << r.errors.error_L2 / r.errors.norm_L2
+                     << ", largest |l1 - 1| " << l1 << ", |l2 - q| " << l2);
+      CHECK(r.errors.error_L2 <= 1e-10 * r.errors.norm_L2);
+      CHECK(r.zone.contact_force == Approx(4.).epsilon(1e-10));
+      CHECK(r.zone.resultant[0] == Approx(-0.8).epsilon(1e-8));
+      CHECK(r.zone.resultant[1] == Approx(-0.4).epsilon(1e-8));
+      CHECK(l1 <= 1e-8);
+      CHECK(l2 <= 1e-8);
+      CHECK(r.solve.n_slip == 0);
+      CHECK(r.solve.n_stick == r.solve.n_contact_nodes);
+    }
+}
