@@ -3,12 +3,14 @@
 // assertion is on a value reduced over all ranks.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
 
 #include <dualcontact/contact_problem.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <sstream>
 
 #include "scene_run.h"
 #include "test_tools.h"
@@ -92,4 +94,57 @@ TEST_CASE("3D friction patch at degree 2 and 3: a uniform pressure and shear "
       CHECK(r.solve.n_slip == 0);
       CHECK(r.solve.n_stick == r.solve.n_contact_nodes);
     }
+}
+
+TEST_CASE("Nearly incompressible Hertz (nu = 0.49): degree 2 gives the peak "
+          "pressure within 1 % on fewer than 1e5 DoFs, degree 1 on as many "
+          "DoFs does not",
+          "[degree]")
+{
+  // prm/hertz.prm (R = 1, E = 1000, P = 2 q on the top) at nu = 0.49, with
+  // Hertz's pressure for that nu: E* = E / (1 - nu^2),
+  // a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a).
+  const double       nu = 0.49, E = 1000., P = 2 * 4.315374524161804;
+  const double       E_star = E / (1. - nu * nu);
+  const double       a      = std::sqrt(4. * P / (numbers::PI * E_star));
+  const double       p0     = 2. * P / (numbers::PI * a);
+  std::ostringstream exact;
+  exact.precision(16);
+  exact << "subsection Material\n  set Poisson's ratio = " << nu
+        << "\nend\nsubsection Exact solution\n  set Contact pressure = " << p0
+        << " * sqrt(max(0, 1 - x^2 / " << a * a
+        << "))\n  set Contact half-width = " << a
+        << "\n  set Peak pressure = " << p0 << "\nend\n";
+
+  // degree 1 with its two cycles and degree 2 on the first mesh have about
+  // as many DoFs (19538 and 19818)
+  double peak_error[3] = {};
+  for (const unsigned int k : {1u, 2u})
+    {
+      const Run          run("hertz.prm",
+                    exact.str() + degree(k) +
+                      (k == 2 ? "subsection Refinement\n  set Number of "
+                                         "cycles = 1\nend\n" :
+                                         ""));
+      const CycleResult &r = run.last();
+      peak_error[k]        = r.zone.max_pressure / p0 - 1.;
+      INFO("degree " << k << ": " << r.mesh.n_dofs << " DoFs, peak "
+                     << r.zone.max_pressure << " against p0 = " << p0 << " ("
+                     << 100. * peak_error[k] << " %), half-width "
+                     << r.zone.half_width << " against a = " << a
+                     << ", pressure error " << r.zone.pressure_error);
+      CHECK(r.mesh.n_dofs <= 100000);
+      CHECK(std::abs(r.zone.contact_force - P) <= 1e-6 * P);
+      if (k == 2)
+        {
+          CHECK(std::abs(peak_error[k]) <= 0.01);
+          CHECK(std::abs(r.zone.peak_pressure_error) <= 0.01);
+          CHECK(r.zone.pressure_error <= 0.02);
+        }
+    }
+  // Q1 locks: its peak is high, and by more than Q2's error
+  INFO("peak errors: degree 1 " << peak_error[1] << ", degree 2 "
+                                << peak_error[2]);
+  CHECK(peak_error[1] > 0.02);
+  CHECK(std::abs(peak_error[2]) < 0.5 * peak_error[1]);
 }
