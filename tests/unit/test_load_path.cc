@@ -8,12 +8,14 @@
 // ranks.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
 
 #include <dualcontact/contact_problem.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 
 #include "scene_run.h"
 #include "test_tools.h"
@@ -129,7 +131,9 @@ TEST_CASE("Spence: a Hertz contact with friction at nu = 0.3 loaded in 1, 2, "
 
 namespace
 {
-  /** The smallest spacing of contact nodes with |x| < a: the contact element.
+  /**
+   * The smallest spacing of contact nodes with |x| < a: the contact element
+   * at degree 1, its shortest Gauss-Lobatto interval at degree k.
    */
   double
   contact_element(const Run &run, const double a)
@@ -237,6 +241,106 @@ TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz: a cylinder pressed, "
   INFO("dissipated over the cycle " << dissipated << ", loop area " << area);
   CHECK(dissipated > 0.);
   CHECK(std::abs(std::abs(area) - dissipated) <= 0.03 * dissipated);
+}
+
+TEST_CASE("Cattaneo-Mindlin at nu = 0.49 with elements of degree 3: the "
+          "stick zone on loading, unloading, reversal and reloading within "
+          "one contact element, the tractions within 5 % of F p0 (RMS)",
+          "[path]")
+{
+  // The scene's cylinder with a contact small against it (a/R = 0.008: the
+  // half disc's own lateral strain under the clamp stays below the shear of
+  // the formulas) at beta = 0.02, on elements of degree 3 (at degree 1 and
+  // 2 the shear locks near nu = 1/2); steps at Q*, 0, -Q* and 0 again.
+  const Run run(
+    "cattaneo_mindlin.prm",
+    "subsection Material\n  set Poisson's ratio = 0.49\nend\n"
+    "subsection Discretization\n  set Polynomial degree = 3\nend\n"
+    "subsection Geometry\n  set Pre-refinement steps = 8\n  set "
+    "Pre-refinement distance = 0.00625\nend\n"
+    "subsection Refinement\n  set Initial global refinement = 3\n  set Number "
+    "of cycles = 1\nend\n"
+    "subsection Boundary conditions\n  set Displacements = 1: 3.5e-5 * "
+    "if(t <= 1, 0, if(t <= 2, t - 1, if(t <= 3, 3 - 2 * (t - 1), 2 * (t - 3) "
+    "- 1))); -0.00016 * min(t, 1)\nend\n"
+    "subsection Load path\n  set Times = 1, 2, 2.5, 3, 3.5\nend\n");
+  const std::vector<CycleResult> &steps = run.problem->steps();
+  REQUIRE(steps.size() == 5);
+  const double F = 0.3;
+  // Q signed by the clamp's reaction at Q* (step 2)
+  const double sign = steps[1].reactions.on_id.at(1)[0] > 0. ? 1. : -1.;
+  const auto   Q    = [&](const unsigned int n) {
+    return sign * steps[n].reactions.on_id.at(1)[0];
+  };
+  const double P  = steps[0].zone.contact_force;
+  const double a  = hertz_half_width(P, run.parameters);
+  const double p0 = 2. * P / (numbers::PI * a);
+  const double h  = contact_element(run, a);
+  INFO("a = " << a << ", contact element " << h
+              << ", Q*/(F P) = " << Q(1) / (F * P));
+  CHECK(Q(1) / (F * P) > 0.4);
+  // q_d(x) = F (p0/a) sqrt(d^2 - x^2), the branches' superpositions
+  const auto q_d = [&](const double x, const double d) {
+    return F * p0 / a * std::sqrt(std::max(d * d - x * x, 0.));
+  };
+  for (unsigned int n = 1; n < 5; ++n)
+    {
+      const double Pn = steps[n].zone.contact_force;
+      const double an = hertz_half_width(Pn, run.parameters);
+      double       c  = 0.;
+      if (n == 1) // loading from 0 to Q*
+        c = an * std::sqrt(1. - Q(n) / (F * Pn));
+      else if (n <= 3) // unloading from Q* (step 2) to 0 and to -Q*
+        c = an * std::sqrt(1. - (Q(1) - Q(n)) / (2. * F * Pn));
+      else // reloading from -Q* (step 4)
+        c = an * std::sqrt(1. - (Q(n) - Q(3)) / (2. * F * Pn));
+      const double measured = steps[n].zone.stick_half_width;
+      INFO("step " << n + 1 << ": Q/(F P) = " << Q(n) / (F * Pn)
+                   << ", stick half-width " << measured << " against " << c
+                   << " (" << (measured - c) / h << " node spacings)");
+      // within a node spacing, so within a third of a contact element
+      CHECK(std::abs(measured - c) <= h);
+
+      // the tractions of contact_step_00<n+1>.csv against the branch's
+      // superposition, RMS over |x| < a with the nodal weights (pointwise,
+      // the square-root kinks at the zone edges put up to 0.2 F p0 on the
+      // node next to each)
+      std::function<double(double)> q;
+      if (n == 1)
+        q = [&](double x) { return q_d(x, an) - q_d(x, c); };
+      else if (n <= 3)
+        {
+          const double c_star = an * std::sqrt(1. - Q(1) / (F * Pn));
+          q                   = [&, c, c_star](double x) {
+            return -q_d(x, an) + 2. * q_d(x, c) - q_d(x, c_star);
+          };
+        }
+      else
+        {
+          const double c_star = an * std::sqrt(1. + Q(3) / (F * Pn));
+          q                   = [&, c, c_star](double x) {
+            return q_d(x, an) - 2. * q_d(x, c) + q_d(x, c_star);
+          };
+        }
+      const CsvFile table(run.directory + "/contact_step_00" +
+                            std::to_string(n + 1) + ".csv",
+                          run.comm);
+      double        sum = 0., measure = 0.;
+      for (unsigned int i = 0; i < table.rows(); ++i)
+        {
+          const double x = table.value(i, "x");
+          if (std::abs(x) >= an)
+            continue;
+          const double w = table.value(i, "weight");
+          const double e = sign * table.value(i, "l2") - q(x);
+          sum += w * e * e;
+          measure += w;
+        }
+      const double rms = std::sqrt(sum / measure) / (F * p0);
+      INFO("step " << n + 1 << ": RMS traction error " << rms << " F p0");
+      CHECK(measure > 1.9 * an);
+      CHECK(rms <= 0.05);
+    }
 }
 
 TEST_CASE("Mindlin-Deresiewicz in 3D: a ball pressed, sheared to Q*, -Q* and "

@@ -12,8 +12,10 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace dualcontact_test
 {
@@ -59,6 +61,64 @@ namespace dualcontact_test
     text << in.rdbuf();
     return text.str();
   }
+
+  /**
+   * A CSV file of numbers with a header line (the program's contact and
+   * step tables), read by rank 0 of `comm` and known on every rank.
+   */
+  class CsvFile
+  {
+  public:
+    CsvFile(const std::string &filename, const MPI_Comm comm)
+    {
+      std::string text;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        text = read_text(filename);
+      text = dealii::Utilities::MPI::broadcast(comm, text, 0);
+      std::istringstream lines(text);
+      std::string        line;
+      std::getline(lines, line);
+      std::istringstream header(line);
+      for (std::string column; std::getline(header, column, ',');)
+        columns.push_back(column);
+      while (std::getline(lines, line))
+        {
+          std::istringstream       fields(line);
+          std::vector<std::string> row;
+          for (std::string field; std::getline(fields, field, ',');)
+            row.push_back(field);
+          if (row.size() == columns.size())
+            values.push_back(row);
+        }
+    }
+
+    unsigned int
+    rows() const
+    {
+      return values.size();
+    }
+
+    /** The entry of `column` in row i as a number (NaN if not one). */
+    double
+    value(const unsigned int i, const std::string &column) const
+    {
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        if (columns[c] == column)
+          try
+            {
+              return std::stod(values[i][c]);
+            }
+          catch (const std::exception &)
+            {
+              break;
+            }
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+  private:
+    std::vector<std::string>              columns;
+    std::vector<std::vector<std::string>> values;
+  };
 
   /** A file under the source tree's tests/ directory. */
   inline std::string
