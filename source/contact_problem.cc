@@ -167,8 +167,9 @@ namespace dualcontact
     result.position = check_position();
     if (scene.effects().contact)
       result.zone = measure_contact_zone();
-    result.errors    = postprocess();
-    result.reactions = compute_reactions(result.zone);
+    result.errors           = postprocess();
+    result.potential_energy = potential_energy();
+    result.reactions        = compute_reactions(result.zone);
     check_balance(result.reactions);
     // the energy friction dissipated in this step (on each mesh of the
     // first step: from the undeformed state)

@@ -1,7 +1,7 @@
 // ContactProblem, what a solved mesh is measured by: the contact zone (its
 // extent, the largest pressure, the stick and slip zones), the reactions on
-// the prescribed boundaries and the obstacle, and the comparison of the
-// nested solve with a cold start.
+// the prescribed boundaries and the obstacle, the potential energy of the
+// displacement, and the comparison of the nested solve with a cold start.
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/dofs/dof_accessor.h>
@@ -132,6 +132,14 @@ namespace dualcontact
   }
 
   template <int dim>
+  double
+  ContactProblem<dim>::potential_energy() const
+  {
+    TimerOutput::Scope t(computing_timer, "postprocess");
+    return dualcontact::potential_energy(mapping, dof_handler, scene, solution);
+  }
+
+  template <int dim>
   ColdStartRecord
   ContactProblem<dim>::compare_with_cold_start()
   {
@@ -230,6 +238,10 @@ namespace dualcontact
   ContactProblem<2>::dissipation() const;
   template double
   ContactProblem<3>::dissipation() const;
+  template double
+  ContactProblem<2>::potential_energy() const;
+  template double
+  ContactProblem<3>::potential_energy() const;
   template ColdStartRecord
   ContactProblem<2>::compare_with_cold_start();
   template ColdStartRecord

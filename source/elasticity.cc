@@ -302,6 +302,31 @@ namespace dualcontact
   }
 
   template <int dim>
+  double
+  potential_energy(const Mapping<dim>                  &mapping,
+                   const DoFHandler<dim>               &dof_handler,
+                   const Scene<dim>                    &scene,
+                   const TrilinosWrappers::MPI::Vector &solution)
+  {
+    // J(u) = sum over the cells K of 1/2 u_K.A_K u_K - b_K.u_K, with the
+    // cell matrices and loads of the assembly (no global matrix needed)
+    CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
+    const unsigned int n_dofs = dof_handler.get_fe().n_dofs_per_cell();
+    Vector<double>     u(n_dofs), Au(n_dofs);
+    double             energy = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          local.assemble(cell, false);
+          cell->get_dof_values(solution, u);
+          local.matrix.vmult(Au, u);
+          energy += 0.5 * (u * Au) - local.rhs * u;
+        }
+    return Utilities::MPI::sum(
+      energy, dof_handler.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
   void
   interpolate_field(
     const Mapping<dim>                                      &mapping,
@@ -542,6 +567,11 @@ namespace dualcontact
     const Scene<dim> &,                                                               \
     const AffineConstraints<double> &,                                                \
     const AffineConstraints<double> &,                                                \
+    const TrilinosWrappers::MPI::Vector &);                                           \
+  template double potential_energy<dim>(                                              \
+    const Mapping<dim> &,                                                             \
+    const DoFHandler<dim> &,                                                          \
+    const Scene<dim> &,                                                               \
     const TrilinosWrappers::MPI::Vector &);                                           \
   template void interpolate_field<dim>(                                               \
     const Mapping<dim> &,                                                             \

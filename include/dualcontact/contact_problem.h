@@ -104,8 +104,8 @@ namespace dualcontact
 
     /**
      * Assemble and solve at the scene's time, then measure: the position,
-     * the contact zone, the errors, the reactions, the balance and the
-     * energy friction dissipated.
+     * the contact zone, the errors, the potential energy, the reactions,
+     * the balance and the energy friction dissipated.
      */
     void
     solve_and_measure(CycleResult &result);
@@ -188,6 +188,13 @@ namespace dualcontact
     /** Norms of u and of its error against an exact solution. */
     ErrorNorms
     postprocess() const;
+
+    /**
+     * The potential energy J(u) = 1/2 a(u, u) - f(u) of the solution, f the
+     * body force and the tractions (elasticity.h).
+     */
+    double
+    potential_energy() const;
 
     /**
      * The files of this cycle: probes.csv (every cycle so far), with contact

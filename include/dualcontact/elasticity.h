@@ -72,6 +72,19 @@ namespace dualcontact
                     const TrilinosWrappers::MPI::Vector &solution);
 
   /**
+   * The potential energy J(u) = 1/2 a(u, u) - f(u) of the ghosted
+   * `solution`, f the applied loads (body force and tractions; the contact
+   * terms do not enter), integrated cell by cell with the quadrature of the
+   * assembly and summed over the ranks (doc/theory.md §4). Collective.
+   */
+  template <int dim>
+  double
+  potential_energy(const Mapping<dim>                  &mapping,
+                   const DoFHandler<dim>               &dof_handler,
+                   const Scene<dim>                    &scene,
+                   const TrilinosWrappers::MPI::Vector &solution);
+
+  /**
    * The nodal vector of the displacement field `field` (a function of the
    * point): its value at the support point of every DoF of the locally
    * owned cells (mapped with `mapping`, so on the curve of a curved cell),

@@ -189,7 +189,10 @@ namespace dualcontact
     ReactionRecord    reactions;
     PositionRecord    position;
     PhaseTimes        time;
-    double            memory_mb = 0.; // peak resident memory, all ranks
+    // the potential energy of the displacement, J(u) = 1/2 a(u, u) - f(u)
+    // (potential_energy() of elasticity.h)
+    double potential_energy = 0.;
+    double memory_mb        = 0.; // peak resident memory, all ranks
   };
 } // namespace dualcontact
 

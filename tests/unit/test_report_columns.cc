@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -84,6 +85,7 @@ namespace
                                                 "u_l2",
                                                 "l2_error",
                                                 "h1_error",
+                                                "potential_energy",
                                                 "cold_uzawa_steps",
                                                 "cold_newton_steps",
                                                 "cold_threshold_steps",
@@ -213,4 +215,16 @@ TEST_CASE("cycles.csv of a 3D scene with an obstacle moved by "
   // the force on the sphere is the contact force, straight up
   const CycleResult &last = run.last();
   CHECK(-last.zone.resultant[2] > 0.);
+}
+
+TEST_CASE("potential_energy of the contact patch test is the exact "
+          "J = 1/2 a(u, u) - f(u) = -p^2 |top| H / (2 E)",
+          "[report][columns]")
+{
+  // prm/patch.prm: u_y = -p y / E on the 2 x 1 block, exact at k = 1; the
+  // contact does no work (u_n = g0 = 0), so a(u, u) = f(u) and J = -f(u)/2
+  // = -(1 * 2 * 1 / 1000) / 2
+  const Run run("patch.prm", one_cycle);
+  CHECK(has(columns_of(run), "potential_energy"));
+  CHECK(std::abs(run.last().potential_energy + 1e-3) < 1e-9);
 }
