@@ -326,6 +326,28 @@ namespace dualcontact
       energy, dof_handler.get_triangulation().get_communicator());
   }
 
+  namespace
+  {
+    /**
+     * FEValues whose quadrature points are the cell's support points (one per
+     * DoF, in the element's order): the mapped positions of all of them from
+     * one evaluation of the mapping per cell. Mapping::
+     * transform_unit_to_real_cell() per point would evaluate the cell's
+     * manifold afresh for each, which at degree k >= 2 on a curved
+     * (transfinite) manifold costs more than the solve.
+     */
+    template <int dim>
+    FEValues<dim>
+    support_point_values(const Mapping<dim>       &mapping,
+                         const FiniteElement<dim> &fe)
+    {
+      return FEValues<dim>(mapping,
+                           fe,
+                           Quadrature<dim>(fe.get_unit_support_points()),
+                           update_quadrature_points);
+    }
+  } // namespace
+
   template <int dim>
   void
   interpolate_field(
@@ -334,18 +356,20 @@ namespace dualcontact
     const std::function<Tensor<1, dim>(const Point<dim> &)> &field,
     TrilinosWrappers::MPI::Vector                           &v)
   {
-    const FiniteElement<dim>      &fe          = dof_handler.get_fe();
-    const std::vector<Point<dim>> &unit_points = fe.get_unit_support_points();
-    const IndexSet                &owned       = v.locally_owned_elements();
+    const FiniteElement<dim> &fe    = dof_handler.get_fe();
+    const IndexSet           &owned = v.locally_owned_elements();
+    FEValues<dim> at_support_points = support_point_values(mapping, fe);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
+          at_support_points.reinit(cell);
+          const std::vector<Point<dim>> &x =
+            at_support_points.get_quadrature_points();
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (owned.is_element(dofs[i]))
-              v[dofs[i]] = field(mapping.transform_unit_to_real_cell(
-                cell, unit_points[i]))[fe.system_to_component_index(i).first];
+              v[dofs[i]] = field(x[i])[fe.system_to_component_index(i).first];
         }
     v.compress(VectorOperation::insert);
   }
@@ -364,13 +388,16 @@ namespace dualcontact
     const Epetra_Map  &map         = matrix.trilinos_matrix().RowMap();
     auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
 
-    const FiniteElement<dim>      &fe          = dof_handler.get_fe();
-    const std::vector<Point<dim>> &unit_points = fe.get_unit_support_points();
+    const FiniteElement<dim> &fe    = dof_handler.get_fe();
+    FEValues<dim> at_support_points = support_point_values(mapping, fe);
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dof_indices);
+          at_support_points.reinit(cell);
+          const std::vector<Point<dim>> &x =
+            at_support_points.get_quadrature_points();
           for (unsigned int i = 0; i < dof_indices.size(); ++i)
             {
               const int local = map.LID(
@@ -378,11 +405,8 @@ namespace dualcontact
               if (local < 0)
                 continue; // owned by another rank
               const unsigned int   c = fe.system_to_component_index(i).first;
-              const Tensor<1, dim> r =
-                (mapping.transform_unit_to_real_cell(cell, unit_points[i]) -
-                 center) /
-                length;
-              (*modes)[c][local] = 1.;
+              const Tensor<1, dim> r = (x[i] - center) / length;
+              (*modes)[c][local]     = 1.;
               // rotation k in the plane (a, b): u_a = -r_b, u_b = r_a
               for (unsigned int k = 0; k < n_rotations; ++k)
                 {
