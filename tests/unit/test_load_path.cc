@@ -275,8 +275,10 @@ TEST_CASE("Cattaneo-Mindlin at nu = 0.49 with elements of degree 3: the "
   const double P  = steps[0].zone.contact_force;
   const double a  = hertz_half_width(P, run.parameters);
   const double p0 = 2. * P / (numbers::PI * a);
-  const double h  = contact_element(run, a);
-  INFO("a = " << a << ", contact element " << h
+  // the smallest spacing of the support points on Gamma_C, 0.28 of a
+  // contact element at degree 3 (Gauss-Lobatto points 0, 0.28, 0.72, 1)
+  const double h = contact_element(run, a);
+  INFO("a = " << a << ", node spacing " << h
               << ", Q*/(F P) = " << Q(1) / (F * P));
   CHECK(Q(1) / (F * P) > 0.4);
   // q_d(x) = F (p0/a) sqrt(d^2 - x^2), the branches' superpositions
