@@ -85,8 +85,7 @@ repo_path() {
   case "$p" in
     "$repo") printf '.' ;;
     "$repo"/*) printf '%s' "${p#"$repo"/}" ;;
-    /*) realpath -m --relative-to="$repo" -- "$p" 2>/dev/null || basename -- "$p" ;;
-    *) printf '%s' "$p" ;;
+    *) printf '<%s outside the repository>' "$(basename -- "$p")" ;;
   esac
 }
 bin_shown="$(repo_path "$bin")"
