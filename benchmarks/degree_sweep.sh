@@ -20,8 +20,9 @@
 # difference of the contact force between 1 and 2 ranks. A scene that the
 # run-size estimate refuses at a degree (exit status 6: the mesh would not
 # fit the machine's memory) is listed as such. The rows of the runs are
-# kept in doc/benchmarks/degree_sweep.rows; SCENES="a b" re-runs those
-# scenes and rewrites the page with the other scenes' rows as they were.
+# kept in doc/benchmarks/degree_sweep.rows; SCENES="a b" (and DEGREES="3")
+# re-runs those scenes (at those degrees) and rewrites the page with the
+# other rows as they were.
 # SKIP (an extended regular expression) leaves out the runs whose
 # "<scene>:<k>:<ranks>" matches it, e.g. SKIP='_3d:3:1|sphere.*:3:1' for the
 # 3D scenes at degree 3 on one rank; TIME_LIMIT (default 900) stops a run
@@ -59,11 +60,12 @@ last_value() {
     { v = (c ? $c : "") } END { print v }' "$1"
 }
 
-# the rows of every run, kept beside the page: a sweep of some scenes
-# (SCENES) replaces their rows and keeps the others'
+# the rows of every run, kept beside the page: a sweep of some scenes or
+# degrees (SCENES, DEGREES) replaces their rows and keeps the others'
 rows="$repo/doc/benchmarks/degree_sweep.rows"
-if [ -n "${SCENES:-}" ] && [ -f "$rows" ]; then
-  awk -v drop=" $scenes " 'index(drop, " " $1 " ") == 0' "$rows" > "$work/kept"
+if { [ -n "${SCENES:-}" ] || [ -n "${DEGREES:-}" ]; } && [ -f "$rows" ]; then
+  awk -v scenes=" $(echo $scenes) " -v degrees=" $(echo $degrees) " \
+    'index(scenes, " " $1 " ") == 0 || index(degrees, " " $2 " ") == 0' "$rows" > "$work/kept"
   mv "$work/kept" "$rows"
 else
   : > "$rows"
@@ -114,6 +116,9 @@ for scene in $scenes; do
     done
   done
 done
+# the page lists the scenes by name, then degree and ranks, whichever run
+# wrote the rows
+sort -k1,1 -k2,2n -k3,3n -o "$rows" "$rows"
 
 {
   echo "# Every scene at degrees 1, 2 and 3 on 1 and 2 ranks"
@@ -128,7 +133,7 @@ done
   echo "difference of the contact force between 1 and 2 ranks, \"mem/DoF\" the"
   echo "peak resident memory of all ranks per DoF. Exit status 6 is the run-size"
   echo "estimate refusing a mesh that would not fit the machine, 124 a run"
-  echo "stopped after $time_limit s, \"skipped\" a run left out${skip:+ (SKIP='$skip')}."
+  echo "stopped after $time_limit s, \"skipped\" a run left out${skip:+ (the last run's SKIP='$skip')}."
   echo
   echo "| scene | k | exit (1, 2 ranks) | DoFs | contact force | Uzawa | Newton | CG/Newton | imbalance | time 1 rank [s] | time 2 ranks [s] | mem/DoF [kB] | 1 vs 2 |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"

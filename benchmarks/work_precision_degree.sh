@@ -2,8 +2,9 @@
 # Work-precision study by polynomial degree: the error of the contact
 # pressure and of the displacement (energy norm) against the degrees of
 # freedom and against the wall time, for FE_Q(k), k = 1, 2, 3, each with
-# global and with contact refinement and nested iteration, on two scenes:
-# the frictionless Hertz cylinder and the same cylinder with Coulomb friction.
+# global and with contact refinement and nested iteration, on three scenes:
+# the frictionless Hertz cylinder, the same cylinder with Coulomb friction
+# (2D), and the rigid sphere pressed into a block (3D Hertz).
 #
 #   bash benchmarks/work_precision_degree.sh
 #
@@ -14,12 +15,13 @@
 #   Refinement/Nested iteration = true,
 #   Output/Directory = a work folder, Output/Write vtu = false,
 #   Output/Print timing = true;
-# and for hertz_friction Refinement/Initial global refinement = 3 (one level
-# coarser than the scene's, so that every degree has three meshes or more
-# below MAX_DOFS).
-# The cycle counts are chosen per degree so that the last mesh stays below
-# MAX_DOFS (FE_Q(2) has about 4 and FE_Q(3) about 9 times the DoFs of FE_Q(1)
-# on one mesh); a run whose last mesh is larger is flagged on the page.
+# and Refinement/Initial global refinement = 3 for hertz_friction and = 1 for
+# indenter_sphere_3d (coarser than the scenes', so that every degree has two
+# meshes or more below MAX_DOFS).
+# The cycle counts are chosen per degree and dimension so that the last mesh
+# stays below MAX_DOFS (FE_Q(2) has about 2^d and FE_Q(3) about 3^d times the
+# DoFs of FE_Q(1) on one mesh); a run whose last mesh is larger is flagged on
+# the page.
 #
 # Errors (each cycle):
 #   pressure_error        relative L2 error of the contact pressure on
@@ -29,7 +31,10 @@
 #                         (contact_NN.csv) joined by straight lines along
 #                         the coordinate s, the square of the difference
 #                         integrated exactly between the merged nodes; the
-#                         error where Hertz is not the answer (friction)
+#                         error where Hertz is not the answer (friction);
+#                         2D scenes only (empty in 3D)
+#   half_width_error      the contact half-width (2D) or radius (3D) against
+#                         Hertz's, where the scene gives it (the program's)
 #   peak_difference       max l1 / the reference's max l1 - 1
 #   energy_error          sqrt(2 |J(u_h) - J_ref|), J the column
 #                         potential_energy (1/2 a(u,u) - f(u)), J_ref that of
@@ -52,12 +57,13 @@
 #
 # Environment (all optional):
 #   DUALCONTACT   the program (default <repository>/build/dualcontact)
-#   SCENES        default "hertz_adaptive hertz_friction"
+#   SCENES        default "hertz_adaptive hertz_friction indenter_sphere_3d"
 #   DEGREES       default "1 2 3"
 #   STRATEGIES    default "global contact"
-#   CYCLES_<STRATEGY>_<k>  cycles of one strategy and degree, e.g.
+#   CYCLES_<STRATEGY>_<k>  cycles of one strategy and degree in 2D, e.g.
 #                 CYCLES_GLOBAL_3=2 (defaults: global 5, 4, 3 and contact 9,
-#                 7, 6 for k = 1, 2, 3)
+#                 7, 6 for k = 1, 2, 3); CYCLES_3D_<STRATEGY>_<k> in 3D
+#                 (defaults: global 4, 3, 2 and contact 6, 5, 4)
 #   MAX_DOFS      the cap the cycle counts keep to (default 350000)
 #   NP            MPI ranks (default 2); MPIRUN_FLAGS extra mpirun options
 #   FIT_FROM      first cycle of the least-squares fits (default 1)
@@ -90,7 +96,7 @@ repo_path() {
 }
 bin_shown="$(repo_path "$bin")"
 
-scenes="${SCENES:-hertz_adaptive hertz_friction}"
+scenes="${SCENES:-hertz_adaptive hertz_friction indenter_sphere_3d}"
 degrees="${DEGREES:-1 2 3}"
 strategies="${STRATEGIES:-global contact}"
 max_dofs="${MAX_DOFS:-350000}"
@@ -103,10 +109,20 @@ for v in "$max_dofs" "$np" "$fit_from"; do
   case "$v" in ''|*[!0-9]*) fail "MAX_DOFS, NP and FIT_FROM must be non-negative integers, not '$v'" ;; esac
 done
 
-# cycles of one strategy and degree: CYCLES_<STRATEGY>_<k>, or the default
+# the space dimension of a scene (Geometry/Dimension, 2 unless set)
+dim_of() {
+  awk '/^[ \t]*subsection[ \t]+Geometry/ { g = 1 } g && /^[ \t]*end/ { g = 0 }
+       g && /^[ \t]*set[ \t]+Dimension[ \t]*=/ { sub(/^[^=]*=[ \t]*/, ""); d = $1 }
+       END { print (d == "") ? 2 : d }' "$repo/prm/$1.prm"
+}
+# cycles of one strategy, degree and dimension: CYCLES_<STRATEGY>_<k> (2D),
+# CYCLES_3D_<STRATEGY>_<k> (3D), or the default
 cycles_of() {
-  local var="CYCLES_${1^^}_$2" n
+  local var n
+  if [ "$3" = 3 ]; then var="CYCLES_3D_${1^^}_$2"; else var="CYCLES_${1^^}_$2"; fi
   if [ -n "${!var:-}" ]; then n="${!var}"
+  elif [ "$3" = 3 ] && [ "$1" = global ]; then n=$((5 - $2))
+  elif [ "$3" = 3 ]; then n=$((7 - $2))
   elif [ "$1" = global ]; then n=$((6 - $2))
   else case "$2" in 1) n=9 ;; 2) n=7 ;; *) n=6 ;; esac
   fi
@@ -117,6 +133,7 @@ cycles_of() {
 scene_entries() {
   case "$1" in
     hertz_friction) printf 'subsection Refinement\n  set Initial global refinement = 3\nend\n' ;;
+    indenter_sphere_3d) printf 'subsection Refinement\n  set Initial global refinement = 1\nend\n' ;;
   esac
 }
 
@@ -161,7 +178,7 @@ for scene in $scenes; do
       runs="$runs $run"
       out="$work/$run"
       if [ "${REUSE:-0}" = 1 ] && [ -s "$out/cycles.csv" ]; then continue; fi
-      cycles="$(cycles_of "$strategy" "$k")"
+      cycles="$(cycles_of "$strategy" "$k" "$(dim_of "$scene")")"
       prm="$work/$run.prm"
       {
         echo "subsection Discretization"
@@ -223,6 +240,10 @@ has_friction() {
   awk '/^[ \t]*subsection[ \t]+Friction/ { f = 1 } f && /^[ \t]*set[ \t]+Law[ \t]*=/ { sub(/^[^=]*=[ \t]*/, ""); law = $1 }
        END { exit !(law != "" && law != "none") }' "$repo/prm/$1.prm"
 }
+# the nodes of a contact CSV sorted along Gamma_C: s, l1 (by the header's names)
+nodes_s_l1() {
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next } { print $c["s"] "," $c["l1"] }' "$1" | sort -t, -k1,1g
+}
 # column value of the last row of a csv
 last_value() {
   awk -F, -v col="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next } { v = $c[col] } END { print v }' "$1"
@@ -243,16 +264,19 @@ for scene in $scenes; do
   if has_friction "$scene"; then primary[$scene]=pressure_difference; else primary[$scene]=pressure_error; fi
   ref_contact="$(ls "$work/$ref"/contact_[0-9]*.csv | sort | tail -n 1)"
   j_ref="$(last_value "$work/$ref/cycles.csv" potential_energy)"
+  dim="$(dim_of "$scene")"
   # the reference's nodes sorted along Gamma_C: s, l1
-  awk -F, 'NR > 1 { print $1 "," $5 }' "$ref_contact" | sort -t, -k1,1g > "$work/$scene.reference"
+  nodes_s_l1 "$ref_contact" > "$work/$scene.reference"
   ref_peak="$(awk -F, 'NR == 1 || $2 > m { m = $2 } END { print m }' "$work/$scene.reference")"
   for run in $runs; do
     case "$run" in "${scene}"_*) ;; *) continue ;; esac
     out="$work/$run"
     : > "$work/$run.differences"
     for f in $(ls "$out"/contact_[0-9]*.csv | sort); do
-      awk -F, 'NR > 1 { print $1 "," $5 }' "$f" | sort -t, -k1,1g > "$work/$run.nodes"
-      awk -F, -v is_ref="$([ "$f" = "$ref_contact" ] && echo 1 || echo 0)" '
+      nodes_s_l1 "$f" > "$work/$run.nodes"
+      # the L2 difference along s in 2D; in 3D Gamma_C is a surface and s no
+      # coordinate on it: the difference is left empty, the peak kept
+      awk -F, -v dim="$dim" -v is_ref="$([ "$f" = "$ref_contact" ] && echo 1 || echo 0)" '
         # the piecewise linear function through the nodes (s, l1) of list q at s
         function at(q, x,    lo, hi, mid) {
           if (x <= S[q, 1]) return L[q, 1]
@@ -264,6 +288,9 @@ for scene in $scenes; do
         FNR == 1 { ++q }
         { ++N[q]; S[q, N[q]] = $1 + 0; L[q, N[q]] = $2 + 0; all[$1 + 0] = 1 }
         END {
+          peak = 0
+          for (i = 1; i <= N[2]; ++i) if (L[2, i] > peak) peak = L[2, i]
+          if (dim == 3) { printf "- %.10e\n", peak; exit }
           # both functions are linear between the merged nodes: the integrals
           # of (l1 - l1_ref)^2 and l1_ref^2 are exact on each piece
           n = 0
@@ -275,8 +302,6 @@ for scene in $scenes; do
             num += h * (d[i] * d[i] + d[i] * d[i + 1] + d[i + 1] * d[i + 1]) / 3
             den += h * (p[i] * p[i] + p[i] * p[i + 1] + p[i + 1] * p[i + 1]) / 3
           }
-          peak = 0
-          for (i = 1; i <= N[2]; ++i) if (L[2, i] > peak) peak = L[2, i]
           printf "%.10e %.10e\n", (is_ref || den <= 0) ? 0 : sqrt(num / den), peak
         }
         function asort_n(v, n,    i, j, t) {  # insertion sort (n is a few thousand)
@@ -292,7 +317,7 @@ for scene in $scenes; do
         last = (is_ref_run && k == nd)
         e = last ? 0 : sqrt(2 * ((j - j_ref) < 0 ? j_ref - j : j - j_ref))
         pd = last ? 0 : peak[k] / ref_peak - 1
-        printf "%s,%.10e,%.10e,%.10e\n", $0, diff[k], pd, e
+        printf "%s,%s,%.10e,%.10e\n", $0, (diff[k] == "-") ? "" : sprintf("%.10e", diff[k]), pd, e
       }' "$work/$run.differences" "$out/cycles.csv" > "$data/$run.csv"
   done
   echo "j_ref_$scene=$j_ref" > "$work/$scene.jref"
@@ -411,6 +436,13 @@ for v in $(compgen -v CYCLES_ || true); do invocation="$invocation$v=${!v} "; do
 if [ -n "${DUALCONTACT:-}" ]; then invocation="${invocation}DUALCONTACT=$bin_shown "; fi
 if [ -n "${EXTRA_PRM:-}" ]; then invocation="${invocation}EXTRA_PRM=... "; fi
 invocation="${invocation}bash benchmarks/work_precision_degree.sh"
+# the cycle counts of each strategy for the degrees, in dimension $1
+cycles_text() {
+  local s k
+  for s in $strategies; do
+    printf '%s %s and ' "$s" "$(for k in $degrees; do printf '%s, ' "$(cycles_of "$s" "$k" "$1")"; done | sed 's/, $//')"
+  done | sed 's/ and $//'
+}
 cores="$(nproc 2>/dev/null || echo '?')"
 cpu="$(awk -F': *' '/^model name/ {print $2; exit}' /proc/cpuinfo 2>/dev/null || true)"
 n_runs=$(wc -w <<< "$runs")
@@ -431,8 +463,9 @@ Load average (1, 5, 15 min) just before the runs: $load_before; just after: ${lo
 Each scene is run with FE_Q(k) and a mapping of degree k, k = $(echo $degrees | sed 's/ /, /g'), each with the
 refinement strategies $(echo $strategies | sed 's/ /, /g'), all with nested iteration (each mesh starts
 from the solution of the one before) and \`Write vtu = false\`. The cycle counts
-per degree keep the last mesh below MAX_DOFS = $max_dofs DoFs (FE_Q(2) has about 4 and
-FE_Q(3) about 9 times the DoFs of FE_Q(1) on one mesh); cycles: $(for s in $strategies; do printf '%s %s and ' "$s" "$(for k in $degrees; do printf '%s, ' "$(cycles_of "$s" "$k")"; done | sed 's/, $//')"; done | sed 's/ and $//') for k = $(echo $degrees | sed 's/ /, /g').
+per degree keep the last mesh below MAX_DOFS = $max_dofs DoFs (FE_Q(2) has about 2^d and
+FE_Q(3) about 3^d times the DoFs of FE_Q(1) on one mesh in d dimensions); cycles for
+k = $(echo $degrees | sed 's/ /, /g'): $(cycles_text 2) in 2D; $(cycles_text 3) in 3D.
 
 What is measured, per cycle:
 
@@ -445,9 +478,14 @@ What is measured, per cycle:
   coordinate s, the square of their difference integrated exactly between
   the merged nodes. Where Hertz's frictionless pressure is not the answer
   (friction changes the pressure by several per cent) this is the error
-  measure;
+  measure. In 3D (a surface Gamma_C, no coordinate s) it is not computed
+  (n/a);
 - *peak error*: the relative error of the largest nodal pressure, against
   Hertz's p0 where the scene gives it, else against the reference run's;
+- *half-width error* (2D) or *radius error* (3D): the signed relative error
+  of the contact zone's half-width or radius against Hertz's a, where the
+  scene gives it (column \`half_width_error\`, the program's measure from
+  the contact nodes; it moves in steps of the node spacing);
 - *energy error*: sqrt(2 |J(u_h) - J_ref|), J(v) = 1/2 a(v, v) - f(v) the
   potential energy of the displacement (column \`potential_energy\`; f the
   body force and the tractions, the contact terms do not enter) and J_ref
@@ -515,13 +553,19 @@ EOF
     else
       echo "$figure_note"
     fi
-    awk -F, -v fit_from="$fit_from" -v primary="$m" -v peakcol="$pk" -v max_dofs="$max_dofs" '
-      function fit(r, xcol, ycol,    i, n, sx, sy, sxx, sxy, x, y, d) {
-        # least squares ln|y| = c + b ln x over the cycles >= fit_from
+    awk -F, -v fit_from="$fit_from" -v primary="$m" -v peakcol="$pk" -v max_dofs="$max_dofs" -v dim="$(dim_of "$scene")" '
+      # least squares ln|y| = c + b ln x over the cycles >= fit_from; a run
+      # with fewer than two such cycles is fitted from cycle 0 (fit_all = 1)
+      function fit(r, xcol, ycol) {
+        fit_all = 0
+        fit_over(r, xcol, ycol, fit_from)
+        if (fit_b == "" && fit_from > 0) { fit_over(r, xcol, ycol, 0); fit_all = (fit_b != "") }
+      }
+      function fit_over(r, xcol, ycol, from,    i, n, sx, sy, sxx, sxy, x, y, d) {
         n = sx = sy = sxx = sxy = 0
         for (i = 1; i <= nrow[r]; ++i) {
-          if (val[r, i, "cycle"] < fit_from) continue
-          y = val[r, i, ycol]; if (y < 0) y = -y
+          if (val[r, i, "cycle"] < from) continue
+          y = val[r, i, ycol]; if (y == "na") continue; if (y < 0) y = -y
           if (val[r, i, xcol] <= 0 || y <= 0) continue
           x = log(val[r, i, xcol]); y = log(y)
           ++n; sx += x; sy += y; sxx += x * x; sxy += x * y
@@ -535,10 +579,12 @@ EOF
         fit_c = (sy - fit_b * sx) / n
         fit_first = first; fit_last = lastc
       }
-      function rate(r, xcol, ycol) { fit(r, xcol, ycol); return (fit_b == "") ? "n/a" : sprintf("%.2f", -fit_b) }
+      function rate(r, xcol, ycol) { fit(r, xcol, ycol); return (fit_b == "") ? "n/a" : sprintf(fit_all ? "%.2f*" : "%.2f", -fit_b) }
       function a(x) { return x < 0 ? -x : x }
-      function err(x) { return (x == 0) ? "ref." : sprintf("%.2e", a(x)) }
+      function err(x) { return (x == "na") ? "n/a" : (x == 0) ? "ref." : sprintf("%.2e", a(x)) }
+      function serr(x) { return (x == "na") ? "n/a" : sprintf("%+.2e", x) }
       function name(r) { return "k = " deg[r] ", " strat[r] }
+      BEGIN { width = (dim == 3) ? "radius" : "half-width" }
       FNR == 1 {
         f = FILENAME; sub(/.*\//, "", f); sub(/\.csv$/, "", f)
         r = ++nrun
@@ -550,8 +596,9 @@ EOF
       }
       {
         k = ++nrow[r]
-        n = split("cycle dofs pressure_error pressure_difference peak_pressure_error peak_difference energy_error time_total time_assembly time_solve newton_steps linear_iterations memory_mb", cols, " ")
-        for (j = 1; j <= n; ++j) val[r, k, cols[j]] = (cols[j] in c) ? $c[cols[j]] + 0 : 0
+        n = split("cycle dofs pressure_error pressure_difference peak_pressure_error peak_difference half_width_error energy_error time_total time_assembly time_solve newton_steps linear_iterations memory_mb", cols, " ")
+        # a column the run does not have, or an empty field: "na"
+        for (j = 1; j <= n; ++j) val[r, k, cols[j]] = ((cols[j] in c) && $c[cols[j]] != "") ? $c[cols[j]] + 0 : "na"
       }
       END {
         print ""
@@ -562,37 +609,40 @@ EOF
         for (r = 1; r <= nrun; ++r) {
           print ""
           printf "#### %s\n\n", name(r)
-          print "| cycle | DoFs | pressure error (Hertz) | pressure difference | peak error | energy error | time [s] | CG / Newton | memory [MB] | memory / DoF [kB] |"
-          print "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+          print "| cycle | DoFs | pressure error (Hertz) | pressure difference | peak error | " width " error | energy error | time [s] | CG / Newton | memory [MB] | memory / DoF [kB] |"
+          print "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
           for (i = 1; i <= nrow[r]; ++i)
-            printf "| %d | %d | %.2e | %s | %s | %s | %.2f | %.1f | %.0f | %.2f |\n",
-              val[r, i, "cycle"], val[r, i, "dofs"], val[r, i, "pressure_error"],
-              err(val[r, i, "pressure_difference"]), err(val[r, i, peakcol]), err(val[r, i, "energy_error"]),
+            printf "| %d | %d | %s | %s | %s | %s | %s | %.2f | %.1f | %.0f | %.2f |\n",
+              val[r, i, "cycle"], val[r, i, "dofs"], err(val[r, i, "pressure_error"]),
+              err(val[r, i, "pressure_difference"]), err(val[r, i, peakcol]), serr(val[r, i, "half_width_error"]),
+              err(val[r, i, "energy_error"]),
               val[r, i, "time_total"],
               (val[r, i, "newton_steps"] > 0) ? val[r, i, "linear_iterations"] / val[r, i, "newton_steps"] : 0,
               val[r, i, "memory_mb"], (val[r, i, "dofs"] > 0) ? 1024 * val[r, i, "memory_mb"] / val[r, i, "dofs"] : 0
           if (val[r, nrow[r], "dofs"] > max_dofs)
             printf "\nThe last mesh has more DoFs than the cap of %d (MAX_DOFS): set fewer cycles for this degree.\n", max_dofs
           fit(r, "dofs", "pressure_error")
-          printf "\nRates per DoF (cycles %s to %s, least squares of ln error against ln DoFs): pressure error %s, pressure difference %s, peak error %s, energy error %s.\n",
+          printf "\nRates per DoF (cycles %s to %s, least squares of ln error against ln DoFs): pressure error %s, pressure difference %s, peak error %s, %s error %s, energy error %s.\n",
             fit_first, fit_last, rate(r, "dofs", "pressure_error"), rate(r, "dofs", "pressure_difference"),
-            rate(r, "dofs", peakcol), rate(r, "dofs", "energy_error")
+            rate(r, "dofs", peakcol), width, rate(r, "dofs", "half_width_error"), rate(r, "dofs", "energy_error")
         }
 
         print ""
         print "### Rates"
         print ""
         printf "Slopes -d ln(error) / d ln(DoFs) and -d ln(error) / d ln(time), least squares over the\n"
-        printf "cycles %d to the last of each run (zero errors left out). In 2D, error ~ h^p is\n", fit_from
-        printf "a rate p/2 per DoF on uniform meshes: 0.5 for O(h), 1 for O(h^2).\n"
+        printf "cycles %d to the last of each run (zero errors left out). In %dD, error ~ h^p is\n", fit_from, dim
+        printf "a rate p/%d per DoF on uniform meshes: %.2f for O(h), %.2f for O(h^2). A rate marked *\n", dim, 1 / dim, 2 / dim
+        printf "is fitted from cycle 0: the run has fewer than two cycles from cycle %d.\n", fit_from
         print ""
-        print "| run | points | pressure error (Hertz) | pressure difference | peak error | energy error | pressure (" primary ") per time |"
-        print "|---|---:|---:|---:|---:|---:|---:|"
+        print "| run | points | pressure error (Hertz) | pressure difference | peak error | " width " error | energy error | pressure (" primary ") per time |"
+        print "|---|---:|---:|---:|---:|---:|---:|---:|"
         for (r = 1; r <= nrun; ++r) {
           fit(r, "dofs", "pressure_error"); np_ = fit_n
-          printf "| %s | %d | %s | %s | %s | %s | %s |\n", name(r), np_,
+          printf "| %s | %d | %s | %s | %s | %s | %s | %s |\n", name(r), np_,
             rate(r, "dofs", "pressure_error"), rate(r, "dofs", "pressure_difference"),
-            rate(r, "dofs", peakcol), rate(r, "dofs", "energy_error"), rate(r, "time_total", primary)
+            rate(r, "dofs", peakcol), rate(r, "dofs", "half_width_error"), rate(r, "dofs", "energy_error"),
+            rate(r, "time_total", primary)
         }
         print ""
         print "What a run cost, summed over its cycles: CG iterations per Newton step, and the wall"
