@@ -64,7 +64,7 @@
 #                 CYCLES_GLOBAL_3=2 (defaults: global 5, 4, 3 and contact 9,
 #                 7, 6 for k = 1, 2, 3); CYCLES_3D_<STRATEGY>_<k> in 3D
 #                 (defaults: global 4, 3, 2 and contact 6, 5, 4)
-#   MAX_DOFS      the cap the cycle counts keep to (default 350000)
+#   MAX_DOFS      the cap the cycle counts keep to (default 400000)
 #   NP            MPI ranks (default 2); MPIRUN_FLAGS extra mpirun options
 #   FIT_FROM      first cycle of the least-squares fits (default 1)
 #   EXTRA_PRM     further entries appended to every parameter file
@@ -99,7 +99,7 @@ bin_shown="$(repo_path "$bin")"
 scenes="${SCENES:-hertz_adaptive hertz_friction indenter_sphere_3d}"
 degrees="${DEGREES:-1 2 3}"
 strategies="${STRATEGIES:-global contact}"
-max_dofs="${MAX_DOFS:-350000}"
+max_dofs="${MAX_DOFS:-400000}"
 np="${NP:-2}"
 fit_from="${FIT_FROM:-1}"
 for s in $scenes; do [ -f "$repo/prm/$s.prm" ] || fail "no parameter file 'prm/$s.prm' (SCENES)"; done
