@@ -187,3 +187,72 @@ TEST_CASE("3D Hertz at degree 1, 2 and 3 (a rigid sphere on a block): on "
   CHECK(pressure_error[2] <= 0.4 * pressure_error[1]);
   CHECK(pressure_error[3] < pressure_error[2]);
 }
+
+TEST_CASE("Patch tests at degree 1, 2 and 3 in 2D with friction and in 3D "
+          "without: exact tractions at every node, every node in contact",
+          "[degree]")
+{
+  // prm/patch.prm (E = 1000, nu = 0, the block [0, 2] x [0, 1]) turned into
+  // the 2D twin of prm/patch_3d.prm: the uniform stress sigma_yy = -1,
+  // sigma_xy = 0.2 (tractions (0.2, -1) on the top, (0, -+0.2) on the
+  // sides), Coulomb friction F = 0.4 on the bottom. The plane carries
+  // p = 1 and the shear 0.2 < F p at every node, which all stick;
+  // u = (4e-4 y, -1e-3 y) is in the space of every degree.
+  const std::string friction_2d =
+    "subsection Boundary conditions\n"
+    "  set Conditions = 0: traction, 1: traction, 2: contact, 3: traction\n"
+    "  set Tractions  = 0: 0; -0.2, 1: 0; 0.2, 3: 0.2; -1\nend\n"
+    "subsection Friction\n  set Law = coulomb\n  set Coefficient = 0.4\nend\n"
+    "subsection Exact solution\n  set Displacement = 0.0004 * y; -0.001 * y\n"
+    "  set Contact pressure = 1\nend\n"
+    "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
+  // prm/patch_3d.prm without friction and without shear: the pressure 1 on
+  // the top alone; u = (0, 0, -1e-3 z). The planes x = 0 and y = 0 are
+  // symmetry planes: without them the lateral motions are free and only
+  // the proximal term holds them, to the Uzawa tolerance, not to round-off.
+  const std::string frictionless_3d =
+    "subsection Boundary conditions\n"
+    "  set Conditions = 0: normal fixed, 2: normal fixed, 4: contact, 5: "
+    "traction\n"
+    "  set Tractions  = 5: 0; 0; -1\nend\n"
+    "subsection Friction\n  set Law = none\nend\n"
+    "subsection Exact solution\n  set Displacement = 0; 0; -0.001 * z\n"
+    "  set Contact pressure = 1\nend\n"
+    "subsection Refinement\n  set Number of cycles = 1\nend\n"
+    "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
+  for (const unsigned int k : {1u, 2u, 3u})
+    {
+      {
+        const Run          run("patch.prm", degree(k) + friction_2d);
+        const CycleResult &r = run.last();
+        Tensor<1, 2>       q;
+        q[0]                = 0.2;
+        const auto [l1, l2] = deviation(run, 1., q);
+        INFO("2D, degree " << k << ": error "
+                           << r.errors.error_L2 / r.errors.norm_L2
+                           << ", largest |l1 - 1| " << l1 << ", |l2 - q| "
+                           << l2);
+        // 16 faces on the plane at the last mesh: 16 k + 1 support points
+        CHECK(r.solve.n_contact_nodes == 16 * k + 1);
+        CHECK(r.solve.n_stick == r.solve.n_contact_nodes);
+        CHECK(r.errors.error_L2 <= 1e-10 * r.errors.norm_L2);
+        CHECK(r.zone.contact_force == Approx(2.).epsilon(1e-10));
+        CHECK(l1 <= 1e-8);
+        CHECK(l2 <= 1e-8);
+      }
+      {
+        const SceneRun<3>  run("patch_3d.prm", degree(k) + frictionless_3d);
+        const CycleResult &r = run.last();
+        const auto [l1, l2]  = deviation(run, 1., Tensor<1, 3>());
+        INFO("3D, degree " << k << ": error "
+                           << r.errors.error_L2 / r.errors.norm_L2
+                           << ", largest |l1 - 1| " << l1);
+        // 4 x 4 faces on the plane: (4 k + 1)^2 support points
+        CHECK(r.solve.n_contact_nodes == (4 * k + 1) * (4 * k + 1));
+        CHECK(r.solve.n_active == r.solve.n_contact_nodes);
+        CHECK(r.errors.error_L2 <= 1e-10 * r.errors.norm_L2);
+        CHECK(r.zone.contact_force == Approx(4.).epsilon(1e-10));
+        CHECK(l1 <= 1e-8);
+      }
+    }
+}
