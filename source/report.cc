@@ -706,8 +706,9 @@ namespace dualcontact
   void
   Report<dim>::finish() const
   {
-    // rates per DoF (dim log(e_{k-1}/e_k) / log(N_k/N_{k-1})): the order in
-    // h for uniform refinement, and still meaningful for adaptive meshes
+    // an error's order, dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}) (dim times
+    // the rate per DoF): the order in h for uniform refinement, and still
+    // meaningful for adaptive meshes
     ConvergenceTable table = screen_table;
     for (const auto &quantity : quantities)
       quantity->format_summary(table);
@@ -721,8 +722,8 @@ namespace dualcontact
       about.push_back(
         std::string(scene.effects().contact ? "contact errors relative, " :
                                               "") +
-        "an error's rate per DoF, dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}), "
-        "beside it");
+        "an error's order, dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}) (dim "
+        "times the rate per DoF), beside it");
     if (parameters.output.print_timing)
       about.push_back("times in s"); // tests/run_regression.cmake looks for it
     about.back() += "):";
