@@ -113,19 +113,25 @@ namespace
 } // namespace
 
 TEST_CASE("Probes in the patch scene find the exact displacement and the "
-          "uniform stress, in probes.csv too",
+          "uniform stress at degree 1, 2 and 3, in probes.csv too",
           "[output][probes]")
 {
   // prm/patch.prm: E = 1000, nu = 0, pressure 1 on the top, the plane y = 0
   // below: u = (0, -y / 1000), sigma_yy = -1, every other component 0, von
-  // Mises 1, and Q1 reproduces it. The points lie inside, on a vertex of
-  // the boundary, on a corner and on cell faces (probably between ranks).
+  // Mises 1, and FE_Q(k) reproduces it at every degree. The points lie
+  // inside, on a vertex of the boundary, on a corner and on cell faces
+  // (probably between ranks).
+  const unsigned int degree = GENERATE(1u, 2u, 3u);
+  INFO("degree " << degree);
   const std::vector<Point<2>> points = {
     {0.5, 0.5}, {2., 1.}, {1.3, 0.2}, {0., 0.}, {1., 0.25}};
   Run                run("patch.prm",
           overlay("Output",
                   "  set Probe points = 0.5, 0.5; 2, 1; 1.3, 0.2; 0, 0; 1, "
-                                 "0.25\n"));
+                                 "0.25\n") +
+            overlay("Discretization",
+                    "  set Polynomial degree = " + std::to_string(degree) +
+                      "\n"));
   const auto        &values   = run.problem->get_probes().values();
   const unsigned int n_cycles = run.problem->results().size();
   REQUIRE(n_cycles == 2);
