@@ -725,7 +725,11 @@ namespace dualcontact
         "an error's order, dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}) (dim "
         "times the rate per DoF), beside it");
     if (parameters.output.print_timing)
-      about.push_back("times in s"); // tests/run_regression.cmake looks for it
+      {
+        about.push_back("MB, kB/DoF: peak memory of all ranks, and per DoF");
+        about.push_back("times in s"); // tests/run_regression.cmake looks
+                                       // for it
+      }
     about.back() += "):";
     pcout << '\n' << wrap("Summary (", about, "; ", "  ");
     if (pcout.is_active())

@@ -36,8 +36,9 @@ namespace dualcontact
       "Print timing",
       "true",
       EntryPattern::boolean(),
-      "Print wall times on screen. Tests switch this off so "
-      "that the screen output is deterministic.");
+      "Print wall times on screen, and in the summary the peak memory of "
+      "all ranks [MB] and per DoF [kB]. Tests switch this off so that the "
+      "screen output is deterministic.");
     declarer.declare_entry(
       "Verbosity",
       "normal",

@@ -424,7 +424,11 @@ namespace dualcontact
     const bool wall_times_registered =
       register_report_quantity<WallTimes>("wall times");
 
-    /** Every scene: memory_mb. */
+    /**
+     * Every scene: memory_mb; in the summary beside the times (it varies
+     * from run to run as they do), with the memory per DoF, which shows
+     * what a degree or a mesh costs in memory.
+     */
     template <int dim>
     class Memory : public ReportQuantity<dim>
     {
@@ -435,6 +439,25 @@ namespace dualcontact
       csv_entries(const CycleResult &r, TableEntries &t) const override
       {
         t.add(600, "memory_mb", r.memory_mb);
+      }
+
+      void
+      summary_entries(const CycleResult &r, TableEntries &s) const override
+      {
+        if (!this->parameters.output.print_timing || r.mesh.n_dofs == 0)
+          return;
+        s.add(200, "MB", r.memory_mb);
+        s.add(210, "kB/DoF", 1024. * r.memory_mb / r.mesh.n_dofs);
+      }
+
+      void
+      format_summary(ConvergenceTable &table) const override
+      {
+        if (this->parameters.output.print_timing)
+          {
+            table.set_precision("MB", 0);
+            table.set_precision("kB/DoF", 2);
+          }
       }
     };
 
