@@ -37,28 +37,8 @@ cycles="${2:-5}"
 case "$np" in ''|*[!0-9]*|0) echo "benchmark_hertz: ranks must be a positive integer, not '$np'" >&2; exit 2 ;; esac
 case "$cycles" in ''|*[!0-9]*|0) echo "benchmark_hertz: cycles must be a positive integer, not '$cycles'" >&2; exit 2 ;; esac
 
-benchmarks="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
-repo="$(cd "$benchmarks/.." && pwd -P)"
-doc="$repo/doc"
-bin="${DUALCONTACT:-$repo/build/dualcontact}"
-if [ ! -x "$bin" ]; then
-  echo "benchmark_hertz: no program at '$bin'; build it (bash contrib/build.sh) or set DUALCONTACT" >&2
-  exit 2
-fi
-
-# A path as seen from the repository root (what the pages in doc/ show:
-# never an absolute path of this machine).
-repo_path() {
-  local p
-  p="$(realpath -m -- "$1" 2>/dev/null || printf '%s' "$1")"
-  case "$p" in
-    "$repo") printf '.' ;;
-    "$repo"/*) printf '%s' "${p#"$repo"/}" ;;
-    /*) realpath -m --relative-to="$repo" -- "$p" 2>/dev/null || basename -- "$p" ;;
-    *) printf '%s' "$p" ;;
-  esac
-}
-bin_shown="$(repo_path "$bin")"
+# benchmarks, repo, doc, bin, bin_shown, repo_path
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh" benchmark_hertz
 
 scene="${SCENE:-hertz}"              # prm/<scene>.prm
 tag="${TAG:-$scene}"                  # names doc/benchmarks/benchmark_<tag>.{log,md}

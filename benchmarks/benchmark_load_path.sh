@@ -24,13 +24,8 @@ export LC_ALL=C
 
 np="${1:-2}"
 case "$np" in ''|*[!0-9]*|0) echo "benchmark_load_path: ranks must be a positive integer, not '$np'" >&2; exit 2 ;; esac
-benchmarks="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
-repo="$(cd "$benchmarks/.." && pwd -P)"
-bin="${DUALCONTACT:-$repo/build/dualcontact}"
-if [ ! -x "$bin" ]; then
-  echo "benchmark_load_path: no program at '$bin'; build it (bash contrib/build.sh) or set DUALCONTACT" >&2
-  exit 2
-fi
+# benchmarks, repo, doc, bin, bin_shown, repo_path
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh" benchmark_load_path
 scene="${SCENE:-cattaneo_mindlin}"
 tag="${TAG:-$scene}"
 if [ ! -f "$repo/prm/$scene.prm" ]; then

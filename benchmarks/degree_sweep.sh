@@ -32,13 +32,8 @@
 set -euo pipefail
 export LC_ALL=C
 
-benchmarks="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
-repo="$(cd "$benchmarks/.." && pwd -P)"
-bin="${DUALCONTACT:-$repo/build/dualcontact}"
-if [ ! -x "$bin" ]; then
-  echo "degree_sweep: no program at '$bin'; build it (bash contrib/build.sh) or set DUALCONTACT" >&2
-  exit 2
-fi
+# benchmarks, repo, doc, bin, bin_shown, repo_path
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh" degree_sweep
 degrees="${DEGREES:-1 2 3}"
 ranks="${RANKS:-1 2}"
 cycles="${CYCLES:-1}"
@@ -133,7 +128,7 @@ sort -k1,1 -k2,2n -k3,3n -o "$rows" "$rows"
   echo "difference of the contact force between 1 and 2 ranks, \"mem/DoF\" the"
   echo "peak resident memory of all ranks per DoF. Exit status 6 is the run-size"
   echo "estimate refusing a mesh that would not fit the machine, 124 a run"
-  echo "stopped after $time_limit s, \"skipped\" a run left out${skip:+ (the last run's SKIP='$skip')}."
+  echo "stopped after $time_limit s, \"skipped\" a run left out${skip:+ (SKIP of the last run: '$skip')}."
   echo
   echo "| scene | k | exit (1, 2 ranks) | DoFs | contact force | Uzawa | Newton | CG/Newton | imbalance | time 1 rank [s] | time 2 ranks [s] | mem/DoF [kB] | 1 vs 2 |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"

@@ -50,28 +50,8 @@
 set -euo pipefail
 export LC_ALL=C
 
-benchmarks="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
-repo="$(cd "$benchmarks/.." && pwd -P)"
-doc="$repo/doc"
-bin="${DUALCONTACT:-$repo/build/dualcontact}"
-if [ ! -x "$bin" ]; then
-  echo "work_precision: no program at '$bin'; build it (bash contrib/build.sh) or set DUALCONTACT=<path to dualcontact>" >&2
-  exit 2
-fi
-
-# A path as seen from the repository root (what doc/results.md shows: never
-# an absolute path of this machine).
-repo_path() {
-  local p
-  p="$(realpath -m -- "$1" 2>/dev/null || printf '%s' "$1")"
-  case "$p" in
-    "$repo") printf '.' ;;
-    "$repo"/*) printf '%s' "${p#"$repo"/}" ;;
-    /*) realpath -m --relative-to="$repo" -- "$p" 2>/dev/null || basename -- "$p" ;;
-    *) printf '%s' "$p" ;;
-  esac
-}
-bin_shown="$(repo_path "$bin")"
+# benchmarks, repo, doc, bin, bin_shown, repo_path
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh" work_precision
 
 scene="${SCENE:-hertz_adaptive}"
 scene_prm="$repo/prm/$scene.prm"

@@ -77,24 +77,10 @@
 set -euo pipefail
 export LC_ALL=C
 
-benchmarks="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)"
-repo="$(cd "$benchmarks/.." && pwd -P)"
-doc="$repo/doc"
-bin="${DUALCONTACT:-$repo/build/dualcontact}"
+# benchmarks, repo, doc, bin, bin_shown, repo_path
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh" work_precision_degree
 say() { echo "work_precision_degree: $*"; }
 fail() { echo "work_precision_degree: $*" >&2; exit 2; }
-[ -x "$bin" ] || fail "no program at '$bin'; build it (bash contrib/build.sh) or set DUALCONTACT=<path to dualcontact>"
-
-repo_path() {
-  local p
-  p="$(realpath -m -- "$1" 2>/dev/null || printf '%s' "$1")"
-  case "$p" in
-    "$repo") printf '.' ;;
-    "$repo"/*) printf '%s' "${p#"$repo"/}" ;;
-    *) printf '<%s outside the repository>' "$(basename -- "$p")" ;;
-  esac
-}
-bin_shown="$(repo_path "$bin")"
 
 scenes="${SCENES:-hertz_adaptive hertz_friction indenter_sphere_3d}"
 degrees="${DEGREES:-1 2 3}"
