@@ -658,7 +658,7 @@ namespace dualcontact
   {
     TimerOutput::Scope   t(computing_timer, "postprocess");
     const PositionRecord record =
-      check_deformed_position(dof_handler, solution, scene);
+      check_deformed_position(mapping, dof_handler, solution, scene);
     for (const std::string &warning : record.warnings)
       report.warning(warning);
     return record;

@@ -1,4 +1,7 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_values.h>
 
 #include <dualcontact/input_error.h>
 #include <dualcontact/plausibility.h>
@@ -101,7 +104,8 @@ namespace dualcontact
 
   template <int dim>
   PositionRecord
-  check_deformed_position(const DoFHandler<dim>               &dof_handler,
+  check_deformed_position(const Mapping<dim>                  &mapping,
+                          const DoFHandler<dim>               &dof_handler,
                           const TrilinosWrappers::MPI::Vector &solution,
                           const Scene<dim>                    &scene)
   {
@@ -115,47 +119,73 @@ namespace dualcontact
       return scene.parameters.boundary.condition(id) ==
              BoundaryCondition::contact;
     };
-    // the vertices of the contact boundary (also those a ghost cell sees):
-    // they are kept out of the foundation by the contact conditions, up to
-    // the tolerance, and are not checked again
-    std::vector<bool> contact_vertex(
-      dof_handler.get_triangulation().n_vertices(), false);
+    // The support points of FE_Q(k), all k: the vertices at k = 1, and at
+    // k >= 2 the points between them too, where a curved or bent boundary
+    // may cross the obstacle while the vertices do not. A support point is
+    // known by the DoF of its first component.
+    const FiniteElement<dim>            &fe     = dof_handler.get_fe();
+    const FiniteElement<dim>            &scalar = fe.base_element(0);
+    FEValues<dim>                        at_support_points(mapping,
+                                    fe,
+                                    Quadrature<dim>(
+                                      scalar.get_unit_support_points()),
+                                    update_quadrature_points);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    // the support points of the contact boundary (also those a ghost cell
+    // sees): they are kept out of the foundation by the contact conditions,
+    // up to the tolerance, and are not checked again
+    std::vector<types::global_dof_index> contact_points;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && on_contact(face->boundary_id()))
-            for (const unsigned int v : face->vertex_indices())
-              contact_vertex[face->vertex_index(v)] = true;
+        {
+          cell->get_dof_indices(dofs);
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                on_contact(cell->face(f)->boundary_id()))
+              for (unsigned int q = 0; q < scalar.n_dofs_per_cell(); ++q)
+                if (scalar.has_support_on_face(q, f))
+                  contact_points.push_back(
+                    dofs[fe.component_to_system_index(0, q)]);
+        }
+    std::sort(contact_points.begin(), contact_points.end());
+    const auto is_contact_point = [&](const types::global_dof_index i) {
+      return std::binary_search(contact_points.begin(),
+                                contact_points.end(),
+                                i);
+    };
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              Tensor<1, dim> u;
-              for (unsigned int c = 0; c < dim; ++c)
-                u[c] = solution[cell->vertex_dof_index(v, c)];
-              max_u = std::max(max_u, u.norm());
-            }
+          cell->get_dof_indices(dofs);
+          at_support_points.reinit(cell);
+          const auto u = [&](const unsigned int q) {
+            Tensor<1, dim> value;
+            for (unsigned int c = 0; c < dim; ++c)
+              value[c] = solution[dofs[fe.component_to_system_index(c, q)]];
+            return value;
+          };
+          for (unsigned int q = 0; q < scalar.n_dofs_per_cell(); ++q)
+            max_u = std::max(max_u, u(q).norm());
           if (!contact)
             continue;
-          for (const auto &face : cell->face_iterators())
+          for (const unsigned int f : cell->face_indices())
             {
-              if (!face->at_boundary())
+              if (!cell->face(f)->at_boundary())
                 continue;
-              const types::boundary_id id = face->boundary_id();
-              for (const unsigned int v : face->vertex_indices())
+              const types::boundary_id id = cell->face(f)->boundary_id();
+              for (unsigned int q = 0; q < scalar.n_dofs_per_cell(); ++q)
                 {
-                  const Point<dim> x = face->vertex(v);
-                  if (contact_vertex[face->vertex_index(v)])
+                  if (!scalar.has_support_on_face(q, f))
+                    continue;
+                  const Point<dim> &x = at_support_points.quadrature_point(q);
+                  if (is_contact_point(
+                        dofs[fe.component_to_system_index(0, q)]))
                     {
                       lowest_contact =
                         std::min(lowest_contact, scene.initial_gap(x));
                       continue;
                     }
-                  Point<dim> deformed = x;
-                  for (unsigned int c = 0; c < dim; ++c)
-                    deformed[c] += solution[face->vertex_dof_index(v, c)];
-                  const double depth = -scene.initial_gap(deformed);
+                  const double depth = -scene.initial_gap(x + u(q));
                   if (depth > deepest)
                     {
                       deepest    = depth;
@@ -231,11 +261,13 @@ namespace dualcontact
   template void
   check_initial_position<3>(const Triangulation<3> &, const Scene<3> &);
   template PositionRecord
-  check_deformed_position<2>(const DoFHandler<2> &,
+  check_deformed_position<2>(const Mapping<2> &,
+                             const DoFHandler<2> &,
                              const TrilinosWrappers::MPI::Vector &,
                              const Scene<2> &);
   template PositionRecord
-  check_deformed_position<3>(const DoFHandler<3> &,
+  check_deformed_position<3>(const Mapping<3> &,
+                             const DoFHandler<3> &,
                              const TrilinosWrappers::MPI::Vector &,
                              const Scene<3> &);
 } // namespace dualcontact

@@ -11,6 +11,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/fe/mapping.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <dualcontact/records.h>
@@ -42,11 +44,14 @@ namespace dualcontact
    *   than round-off), a warning;
    * - displacements above 5 % of the body's size give a warning (the
    *   model is linear: small displacements and strains).
+   * Both are checked at the support points of the element (the vertices
+   * and, at degree k >= 2, the points between them), placed by `mapping`.
    * `solution` is ghosted.
    */
   template <int dim>
   PositionRecord
-  check_deformed_position(const DoFHandler<dim>               &dof_handler,
+  check_deformed_position(const Mapping<dim>                  &mapping,
+                          const DoFHandler<dim>               &dof_handler,
                           const TrilinosWrappers::MPI::Vector &solution,
                           const Scene<dim>                    &scene);
 } // namespace dualcontact

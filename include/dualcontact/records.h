@@ -131,12 +131,12 @@ namespace dualcontact
   /** What check_deformed_position() (plausibility.h) found. */
   struct PositionRecord
   {
-    double max_displacement = 0.; // max |u| over the vertices
+    double max_displacement = 0.; // max |u| over the support points
     // the deepest point of a boundary without the contact condition below
     // the foundation plane (0: none below it), and its boundary id
     double             penetration    = 0.;
     types::boundary_id penetrating_id = 0;
-    // the smallest initial gap of the contact boundary's vertices
+    // the smallest initial gap of the contact boundary's support points
     double min_initial_gap = 0.;
     // one line each, for the log: what is implausible but not wrong
     std::vector<std::string> warnings;
