@@ -722,8 +722,8 @@ namespace dualcontact
       about.push_back(
         std::string(scene.effects().contact ? "contact errors relative, " :
                                               "") +
-        "an error's order, dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}) (dim "
-        "times the rate per DoF), beside it");
+        "an error's order, dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}), beside "
+        "it");
     if (parameters.output.print_timing)
       {
         about.push_back("MB, kB/DoF: peak memory of all ranks, and per DoF");
