@@ -248,8 +248,7 @@ namespace dualcontact
   Report<dim>::print_legend() const
   {
     const Loops loops = loops_of(parameters, scene);
-    pcout << "Legend (README.md, \"Reading the output\", explains every "
-             "figure):\n";
+    pcout << "Legend (doc/output.md explains every figure):\n";
     if (!loops.contact)
       {
         pcout << legend_line("CG",

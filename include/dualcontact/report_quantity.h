@@ -4,8 +4,8 @@
 // (frictionless scenes have no tangential columns, 2D scenes no contact
 // area), and adds its own columns to cycles.csv, to the summary table and
 // to the row a quiet run prints per cycle, and its own lines to a cycle's
-// results. README.md, "Reading the output", says which quantity writes
-// which columns.
+// results. doc/output.md, "Columns of cycles.csv", says which quantity
+// writes which columns.
 //
 // Adding a quantity is one class and its registration line, in any file of
 // the library (source/report/*.cc) or of a program of one's own:

@@ -1,4 +1,4 @@
-// What a run writes for the user to plot (README.md, "Reading the output"):
+// What a run writes for the user to plot (doc/output.md):
 // probes.csv (the displacement and stress at <Output/Probe points>, found in
 // the distributed mesh), contact_NN.csv (one row per contact node), the
 // contact fields on Gamma_C only (contact_NN.pvtu) with a .pvd for the

@@ -47,7 +47,7 @@ namespace
     return std::find(columns.begin(), columns.end(), name) != columns.end();
   }
 
-  /** The columns every scene could write, in their order (README.md). */
+  /** The columns every scene could write, in their order (doc/output.md). */
   const std::vector<std::string> all_columns = {"cycle",
                                                 "cells",
                                                 "dofs",
