@@ -345,19 +345,9 @@ namespace dualcontact
   }
 
   template <int dim>
-  NewtonStatistics
-  NewtonSolver<dim>::minimise(const ContactSystem                 &system_,
-                              const ContactSet<dim>               &contact,
-                              const TrilinosWrappers::MPI::Vector &v_previous,
-                              TrilinosWrappers::MPI::Vector       &v,
-                              const double                         envelope,
-                              const double       final_tolerance,
-                              const unsigned int uzawa_step,
-                              IterationObserver *observer)
+  double
+  NewtonSolver<dim>::force_reference(const ContactSet<dim> &contact) const
   {
-    system                 = &system_;
-    const MPI_Comm comm    = v.get_mpi_communicator();
-    const unsigned n_nodes = contact.n_local_nodes();
     // The force scale the gradient is measured against. A gradient g left
     // at a contact node moves its multipliers in the next update by about
     // g_s / m_s (doc/theory.md §6), so the Newton tolerance must be
@@ -366,8 +356,10 @@ namespace dualcontact
     // can be far larger than the contact forces, and a tolerance relative
     // to it leaves the Uzawa iteration asking for changes of the
     // multipliers that no proximal step resolves.
-    const double load  = system->load.l2_norm();
-    double       local = 0.;
+    const MPI_Comm comm    = system->load.get_mpi_communicator();
+    const unsigned n_nodes = contact.n_local_nodes();
+    const double   load    = system->load.l2_norm();
+    double         local   = 0.;
     for (unsigned int s = 0; s < n_nodes; ++s)
       local += std::pow(contact.nodes[s].weight, 2) *
                (contact.l1[s] * contact.l1[s] +
@@ -389,202 +381,272 @@ namespace dualcontact
     // along a load path, not below the previous step's contact forces: a
     // step that unloads everything stops at the round-off of the path
     reference = std::max(reference, system->previous.force_norm);
-    if (!(reference > 0.))
-      reference = 1.; // nothing loads the body: v = 0 at once
+    return reference > 0. ? reference : 1.; // no load at all: v = 0 at once
+  }
+
+  template <int dim>
+  double
+  NewtonSolver<dim>::evaluate(const ContactSet<dim>               &contact,
+                              const TrilinosWrappers::MPI::Vector &v,
+                              IterationRecord                     &record)
+  {
+    contact.augmented_state(v, system->r, system->r_t, z, y);
+    compute_gradient(contact, v, smooth_gradient, gradient);
+    previous_status = status;
+    status.resize(contact.n_local_nodes());
+    types::global_dof_index n_active = 0;
+    for (unsigned int s = 0; s < status.size(); ++s)
+      {
+        status[s] =
+          hessian_branch(z[s], contact.friction, y[s], contact.threshold[s]);
+        n_active += (status[s] != separated);
+      }
+    record.n_active =
+      Utilities::MPI::sum(n_active, gradient.get_mpi_communicator());
+    return gradient.l2_norm();
+  }
+
+  template <int dim>
+  bool
+  NewtonSolver<dim>::at_roundoff_floor(const unsigned int j,
+                                       const double       gradient_norm,
+                                       const double       target,
+                                       const double       reference,
+                                       IterationObserver *observer)
+  {
+    // With the node statuses fixed M_k is quadratic (in 3D only without
+    // slipping nodes: the projection onto the disc), and a full Newton
+    // step ends at its minimiser up to the CG tolerance. If full steps
+    // at unchanged statuses stop reducing the gradient, it has reached
+    // the round-off floor of K (which rises with lambda/mu, i.e. as nu
+    // -> 1/2): accept that floor when it is within 10^3 of the target.
+    bool unchanged = j > 0;
+    for (unsigned int s = 0; unchanged && s < status.size(); ++s)
+      unchanged = status[s] == previous_status[s];
+    const MPI_Comm comm = gradient.get_mpi_communicator();
+    unchanged           = Utilities::MPI::min(unchanged ? 1 : 0, comm) == 1;
+    // A node whose status flips at round-off of its z or y (on 2 ranks
+    // the sums are taken in another order) changes the matrix by one
+    // contact term and leaves the floor where it is: five stalled full
+    // steps in a row count as at the floor whatever the statuses do.
+    // A step counts as full when the line search takes (nearly) all of
+    // it: at the floor the sufficient-decrease test sees only round-off
+    // and the exact minimiser lies a rounding error away from 1. A step
+    // the line search cannot take at all (alpha below 1e-6: M_k falls
+    // along the direction by less than its round-off) stalls as well.
+    const double alpha    = progress.previous_alpha;
+    const bool   stalling = j > 0 && (alpha > 0.9 || alpha < 1e-6) &&
+                          gradient_norm > 0.5 * progress.previous_gradient;
+    progress.stalled = (stalling && unchanged) ? progress.stalled + 1 : 0;
+    progress.stalled_switching = stalling ? progress.stalled_switching + 1 : 0;
+    progress.previous_gradient = gradient_norm;
+    // (Round-off of K leaves about 1e-10 |b| even at nu = 0.49999,
+    // doc/robustness.md; a stall far above that is not round-off: in 3D
+    // the projection onto the friction disc is not linear at fixed
+    // statuses, and a few full steps can stall at 1e-2 |b|.)
+    const bool at_floor =
+      (progress.stalled >= 3 || progress.stalled_switching >= 5) &&
+      gradient_norm <= 1e3 * target && gradient_norm <= 1e-6 * reference;
+    if (at_floor)
+      roundoff_floor = std::max(roundoff_floor, gradient_norm / reference);
+    if (at_floor && !roundoff_reported && observer != nullptr)
+      observer->note(
+        "Newton: the gradient stagnates at " +
+        format_number(gradient_norm / reference) +
+        " |b| (round-off of this matrix) above the target " +
+        format_number(target / reference) +
+        " |b|; accepted, and the later Uzawa steps of this solve stop "
+        "there at once");
+    roundoff_reported |= at_floor;
+    return at_floor;
+  }
+
+  template <int dim>
+  void
+  NewtonSolver<dim>::check_step_limit(const unsigned int     j,
+                                      const ContactSet<dim> &contact,
+                                      const IterationRecord &record,
+                                      const double relative_target) const
+  {
+    // <Solver/Maximum Newton steps> counts the full steps. A step that the
+    // line search cuts short ends at a kink of M_k, where a node changes
+    // its status (or its direction of slip): with gross slip and a large r
+    // the Newton iteration crosses many of them one by one, and M_k still
+    // falls at every step (piecewise quadratic and strictly convex:
+    // finitely many such steps). Such steps are allowed on top, up to one
+    // per contact node.
+    const double       alpha = progress.previous_alpha;
+    const unsigned int limit =
+      parameters.max_newton_steps +
+      static_cast<unsigned int>(
+        std::min<types::global_dof_index>(progress.short_steps,
+                                          contact.n_global_nodes()));
+    AssertThrow(
+      j < limit,
+      ExcMessage(
+        "The Newton iteration (loop 3) did not converge in " +
+        std::to_string(j) + " steps in Uzawa step " +
+        std::to_string(record.uzawa_step) + " (relative gradient " +
+        format_number(record.gradient) + ", wanted " +
+        format_number(relative_target) + ", last step length " +
+        format_number(alpha) + "). Likely causes, most likely first: " +
+        (alpha < 0.1 ?
+           "(1) the contact and stick/slip statuses switch at every step "
+           "(short steps of the line search): lower <Solver/"
+           "Augmentation parameter>; (2) too few steps allowed: raise "
+           "<Solver/Maximum Newton steps>." :
+           "(1) too few steps allowed: raise <Solver/Maximum Newton "
+           "steps>; (2) a large <Solver/Augmentation parameter>, whose "
+           "contact terms make each step harder: lower it.")));
+  }
+
+  template <int dim>
+  void
+  NewtonSolver<dim>::solve_for_direction(const ContactSet<dim> &contact,
+                                         const double           forcing,
+                                         IterationRecord       &record,
+                                         NewtonStatistics      &statistics)
+  {
+    // The Newton direction: H d = -grad, by CG with AMG, solved only as
+    // accurately as the target needs (inexact Newton: `forcing` is the
+    // relative CG tolerance). H is K with the contact terms added in
+    // place, until remove_contact_terms() below. (If anything between
+    // throws, K keeps them: the run ends then.)
+    auto clock = std::chrono::steady_clock::now();
+    add_contact_terms(contact);
+    const TrilinosWrappers::SparseMatrix &H = system->stiffness;
+    statistics.times.newton_matrix += lap(clock);
+    record.amg_setups = update_preconditioner(status, record.n_active);
+    statistics.times.amg_setup += lap(clock);
+    newton_rhs.equ(-1., gradient);
+    direction            = 0;
+    bool solved          = false;
+    record.cg_iterations = 0;
+    if (record.amg_setups == 0)
+      {
+        // The AMG of an earlier Newton matrix. The contact terms r m_s
+        // of the nodes whose status changed since are large (about
+        // r_rel times the stiffness), and a preconditioner without them
+        // can make CG take a hundred times the iterations it took after
+        // the set-up (766 against 9 on the 3D ball with friction at 2.3e5
+        // DoFs; no convergence in 2000 at 6.8e5). So CG stops at three
+        // times those plus 30, and the AMG is built for this matrix; CG
+        // goes on from where it stopped.
+        const auto [converged, iterations] =
+          linear_solver.try_solve(H,
+                                  direction,
+                                  newton_rhs,
+                                  forcing,
+                                  3 * cg_iterations_after_setup + 30);
+        record.cg_iterations = iterations;
+        solved               = converged;
+        statistics.times.cg += lap(clock);
+        if (!solved)
+          {
+            linear_solver.initialize(H);
+            statistics.times.amg_setup += lap(clock);
+            amg_status        = status;
+            amg_valid         = true;
+            amg_chi_scale     = system->chi_scale;
+            record.amg_setups = 1;
+          }
+      }
+    unsigned int final_iterations = record.cg_iterations;
+    if (!solved)
+      {
+        final_iterations =
+          linear_solver.solve(H, direction, newton_rhs, forcing);
+        record.cg_iterations += final_iterations;
+      }
+    statistics.times.cg += lap(clock);
+    remove_contact_terms();
+    statistics.times.newton_matrix += lap(clock);
+    last_cg_iterations = final_iterations;
+    if (record.amg_setups > 0)
+      cg_iterations_after_setup = final_iterations;
+    system->homogeneous_constraints.distribute(direction);
+  }
+
+  template <int dim>
+  NewtonStatistics
+  NewtonSolver<dim>::minimise(const ContactSystem                 &system_,
+                              const ContactSet<dim>               &contact,
+                              const TrilinosWrappers::MPI::Vector &v_previous,
+                              TrilinosWrappers::MPI::Vector       &v,
+                              const double                         envelope,
+                              const double       final_tolerance,
+                              const unsigned int uzawa_step,
+                              IterationObserver *observer)
+  {
+    system                   = &system_;
+    const MPI_Comm comm      = v.get_mpi_communicator();
+    const double   reference = force_reference(contact);
 
     // The smooth part's gradient is K v - rhs with rhs = b + chi M v^k
     // (chi the step's proximal weight).
     rhs.reinit(system->load);
-    TrilinosWrappers::MPI::Vector tmp(system->load);
-    system->mass.vmult(tmp, v_previous);
-    rhs = system->load;
-    rhs.add(system->proximal_weight(), tmp);
-
-    TrilinosWrappers::MPI::Vector smooth_gradient(rhs), gradient(rhs),
-      direction(rhs), newton_rhs(rhs);
-    std::vector<unsigned char> status(n_nodes), previous_status(n_nodes);
+    system->mass.vmult(rhs, v_previous);
+    rhs.sadd(system->proximal_weight(), 1., system->load);
+    for (auto *vector : {&smooth_gradient, &gradient, &direction, &newton_rhs})
+      vector->reinit(rhs);
+    status.clear();
+    progress = Progress();
 
     NewtonStatistics statistics;
     double           target = 0.; // absolute gradient tolerance of this call
-    // for the round-off test: the previous step length and gradient, and
-    // how many steps in a row have stalled
-    double       previous_alpha = 0., previous_gradient = 0.;
-    unsigned int stalled = 0, stalled_switching = 0;
     for (unsigned int j = 0;; ++j)
       {
         Timer timer(comm, true);
         auto  clock = std::chrono::steady_clock::now();
-        contact.augmented_state(v, system->r, system->r_t, z, y);
-        compute_gradient(contact, v, smooth_gradient, gradient);
 
         IterationRecord record;
-        record.loop       = Loop::newton;
-        record.uzawa_step = uzawa_step;
-        record.index      = j;
-        record.gradient   = gradient.l2_norm() / reference;
-
-        types::global_dof_index n_active = 0;
-        for (unsigned int s = 0; s < n_nodes; ++s)
-          {
-            status[s] = hessian_branch(z[s],
-                                       contact.friction,
-                                       y[s],
-                                       contact.threshold[s]);
-            n_active += (status[s] != separated);
-          }
-        record.n_active = Utilities::MPI::sum(n_active, comm);
+        record.loop                = Loop::newton;
+        record.uzawa_step          = uzawa_step;
+        record.index               = j;
+        const double gradient_norm = evaluate(contact, v, record);
+        record.gradient            = gradient_norm / reference;
 
         // Stop when the gradient is below the envelope and has fallen by the
         // Newton gradient reduction within this Uzawa step (each step is then
         // solved as accurately as the Uzawa iteration can use, and no more),
-        // or when it is below the final tolerance (doc/theory.md §6).
-        const double gradient_norm = gradient.l2_norm();
+        // or when it is below the final tolerance (doc/theory.md §6), or at
+        // the round-off floor of the matrix.
         if (j == 0)
-          target = std::max(
-            {final_tolerance * reference,
-             std::min(envelope * reference,
-                      parameters.newton_gradient_reduction * gradient_norm),
-             1.5 * roundoff_floor * reference});
-        // With the node statuses fixed M_k is quadratic (in 3D only without
-        // slipping nodes: the projection onto the disc), and a full Newton
-        // step ends at its minimiser up to the CG tolerance. If full steps
-        // at unchanged statuses stop reducing the gradient, it has reached
-        // the round-off floor of K (which rises with lambda/mu, i.e. as nu
-        // -> 1/2): accept that floor when it is within 10^3 of the target.
-        bool unchanged = j > 0;
-        for (unsigned int s = 0; unchanged && s < n_nodes; ++s)
-          unchanged = status[s] == previous_status[s];
-        unchanged = Utilities::MPI::min(unchanged ? 1 : 0, comm) == 1;
-        // A node whose status flips at round-off of its z or y (on 2 ranks
-        // the sums are taken in another order) changes the matrix by one
-        // contact term and leaves the floor where it is: five stalled full
-        // steps in a row count as at the floor whatever the statuses do.
-        const bool stalling = j > 0 && previous_alpha == 1. &&
-                              gradient_norm > 0.5 * previous_gradient;
-        stalled           = (stalling && unchanged) ? stalled + 1 : 0;
-        stalled_switching = stalling ? stalled_switching + 1 : 0;
-        // (Round-off of K leaves about 1e-10 |b| even at nu = 0.49999,
-        // doc/robustness.md; a stall far above that is not round-off: in 3D
-        // the projection onto the friction disc is not linear at fixed
-        // statuses, and a few full steps can stall at 1e-2 |b|.)
-        const bool at_floor = (stalled >= 3 || stalled_switching >= 5) &&
-                              gradient_norm <= 1e3 * target &&
-                              gradient_norm <= 1e-6 * reference;
-        if (at_floor)
-          roundoff_floor = std::max(roundoff_floor, gradient_norm / reference);
-        if (at_floor && !roundoff_reported && observer != nullptr)
-          observer->note(
-            "Newton: the gradient stagnates at " +
-            format_number(gradient_norm / reference) +
-            " |b| (round-off of this matrix) above the target " +
-            format_number(target / reference) +
-            " |b|; accepted, and the later Uzawa steps of this solve stop "
-            "there at once");
-        roundoff_reported |= at_floor;
+          {
+            target = std::max(final_tolerance * reference,
+                              std::min(envelope * reference,
+                                       parameters.newton_gradient_reduction *
+                                         gradient_norm));
+            // a floor found earlier in this solve: the later Newton
+            // iterations stop there at once
+            statistics.at_floor = 1.5 * roundoff_floor * reference > target;
+            target = std::max(target, 1.5 * roundoff_floor * reference);
+          }
+        const bool at_floor =
+          at_roundoff_floor(j, gradient_norm, target, reference, observer);
         statistics.times.gradient += lap(clock);
         if (gradient_norm <= target || at_floor)
           {
+            statistics.at_floor |= at_floor;
             timer.stop();
             record.time = timer.wall_time();
             if (observer != nullptr)
               observer->newton_step(record);
             return statistics;
           }
-        // Past <Solver/Maximum Newton steps>, a solve goes on while the
-        // line search cuts its steps short: with gross slip and a large r
-        // the exact minimiser along a Newton direction lies at a kink of
-        // M_k, where a node changes its status (or its direction of slip),
-        // and M_k still falls at every step (piecewise quadratic and
-        // strictly convex: finitely many such steps). It may take one more
-        // step per contact node.
-        const bool         switching = j > 0 && previous_alpha < 1.;
-        const unsigned int limit =
-          parameters.max_newton_steps +
-          (switching ? static_cast<unsigned int>(contact.n_global_nodes()) : 0);
-        previous_status   = status;
-        previous_gradient = gradient_norm;
-        AssertThrow(
-          j < limit,
-          ExcMessage(
-            "The Newton iteration (loop 3) did not converge in " +
-            std::to_string(j) + " steps in Uzawa step " +
-            std::to_string(uzawa_step) + " (relative gradient " +
-            format_number(record.gradient) + ", wanted " +
-            format_number(target / reference) + ", last step length " +
-            format_number(previous_alpha) +
-            "). Likely causes, most likely first: " +
-            (previous_alpha < 0.1 ?
-               "(1) the contact and stick/slip statuses switch at every step "
-               "(short steps of the line search): lower <Solver/"
-               "Augmentation parameter>; (2) too few steps allowed: raise "
-               "<Solver/Maximum Newton steps>." :
-               "(1) too few steps allowed: raise <Solver/Maximum Newton "
-               "steps>; (2) a large <Solver/Augmentation parameter>, whose "
-               "contact terms make each step harder: lower it.")));
+        check_step_limit(j, contact, record, target / reference);
 
-        // The Newton direction: H d = -grad, by CG with AMG, solved only as
-        // accurately as the target needs (inexact Newton). H is K with the
-        // contact terms added in place, until remove_contact_terms() below.
-        // (If anything between throws, K keeps them: the run ends then.)
-        add_contact_terms(contact);
-        const TrilinosWrappers::SparseMatrix &H = system->stiffness;
-        statistics.times.newton_matrix += lap(clock);
-        record.amg_setups = update_preconditioner(status, record.n_active);
-        statistics.times.amg_setup += lap(clock);
-        const double forcing =
-          std::min(0.1, std::max(1e-12, 0.5 * target / gradient_norm));
-        newton_rhs.equ(-1., gradient);
-        direction            = 0;
-        bool solved          = false;
-        record.cg_iterations = 0;
-        if (record.amg_setups == 0)
-          {
-            // The AMG of an earlier Newton matrix. The contact terms r m_s
-            // of the nodes whose status changed since are large (about
-            // r_rel times the stiffness), and a preconditioner without them
-            // can make CG take a hundred times the iterations it took after
-            // the set-up (766 against 9 on the 3D ball with friction at 2.3e5
-            // DoFs; no convergence in 2000 at 6.8e5). So CG stops at three
-            // times those plus 30, and the AMG is built for this matrix; CG
-            // goes on from where it stopped.
-            const auto [converged, iterations] =
-              linear_solver.try_solve(H,
-                                      direction,
-                                      newton_rhs,
-                                      forcing,
-                                      3 * cg_iterations_after_setup + 30);
-            record.cg_iterations = iterations;
-            solved               = converged;
-            statistics.times.cg += lap(clock);
-            if (!solved)
-              {
-                linear_solver.initialize(H);
-                statistics.times.amg_setup += lap(clock);
-                amg_status        = status;
-                amg_valid         = true;
-                amg_chi_scale     = system->chi_scale;
-                record.amg_setups = 1;
-              }
-          }
-        unsigned int final_iterations = record.cg_iterations;
-        if (!solved)
-          {
-            final_iterations =
-              linear_solver.solve(H, direction, newton_rhs, forcing);
-            record.cg_iterations += final_iterations;
-          }
-        statistics.times.cg += lap(clock);
-        remove_contact_terms();
-        statistics.times.newton_matrix += lap(clock);
-        last_cg_iterations = final_iterations;
-        if (record.amg_setups > 0)
-          cg_iterations_after_setup = final_iterations;
-        system->homogeneous_constraints.distribute(direction);
-
+        solve_for_direction(
+          contact,
+          std::min(0.1, std::max(1e-12, 0.5 * target / gradient_norm)),
+          record,
+          statistics);
+        clock              = std::chrono::steady_clock::now();
         const double alpha = line_search(contact, smooth_gradient, direction);
         v.add(alpha, direction);
-        record.step_length = alpha;
-        previous_alpha     = alpha;
+        record.step_length      = alpha;
+        progress.previous_alpha = alpha;
+        progress.short_steps += (alpha < 1.);
         statistics.times.gradient += lap(clock);
 
         timer.stop();

@@ -219,18 +219,23 @@ namespace dualcontact
     const std::vector<IterationRecord> &history,
     const bool                          friction) const
   {
-    // The proximal steps no longer move v (the Newton iteration is at its
-    // final tolerance and takes no step, twice in a row), the constraint
-    // holds, and the changes of the multipliers stay where they are: the
-    // rest of them is what the inner solves leave (doc/theory.md §6), and
-    // no further Uzawa step can remove it.
+    // The proximal steps no longer improve v (twice in a row the Newton
+    // iteration is at its final tolerance and takes no step, or it stops
+    // at the round-off floor of its matrix, whose gradient moves the
+    // multipliers by round-off at every update), the constraint holds, and
+    // the changes of the multipliers do not shrink: the rest of them is
+    // what the inner solves leave (doc/theory.md §6), and no further Uzawa
+    // step can remove it.
     const std::size_t n = history.size();
     if (n < 3 || newton_envelope(n) > final_newton_tolerance())
       return false;
     const IterationRecord &last = history[n - 1], &before = history[n - 2];
     const double           tolerance = parameters.uzawa_tolerance;
-    return last.newton_steps == 0 && before.newton_steps == 0 &&
-           last.violation <= tolerance && last.complementarity <= tolerance &&
+    const auto             still     = [](const IterationRecord &record) {
+      return record.newton_steps == 0 || record.newton_at_floor;
+    };
+    return still(last) && still(before) && last.violation <= tolerance &&
+           last.complementarity <= tolerance &&
            largest_change(last, friction) <= 1e3 * tolerance &&
            largest_change(last, friction) >=
              0.5 * largest_change(before, friction);
@@ -411,11 +416,12 @@ namespace dualcontact
                                         update_start)
             .count();
         timer.stop();
-        record.uzawa_step    = k;
-        record.newton_steps  = newton_statistics.newton_steps;
-        record.cg_iterations = newton_statistics.cg_iterations;
-        record.amg_setups    = newton_statistics.amg_setups;
-        record.time          = timer.wall_time();
+        record.uzawa_step      = k;
+        record.newton_steps    = newton_statistics.newton_steps;
+        record.newton_at_floor = newton_statistics.at_floor;
+        record.cg_iterations   = newton_statistics.cg_iterations;
+        record.amg_setups      = newton_statistics.amg_setups;
+        record.time            = timer.wall_time();
         if (observer != nullptr)
           observer->uzawa_step(record, contact.friction, update_threshold);
         history.push_back(record);
@@ -444,15 +450,17 @@ namespace dualcontact
                std::max(threshold_tolerance, 1e3 * parameters.uzawa_tolerance)))
           {
             statistics.at_roundoff_floor = true;
-            say("Uzawa: converged at the round-off floor of the inner "
-                "solves: the Newton step no longer moves v, the violation (" +
+            say("Uzawa: stopped at the round-off floor of the inner "
+                "solves, accuracy reached " +
+                format_number(largest_change(record, contact.friction)) +
+                " (the multipliers' and v's relative changes; <Solver/Uzawa "
+                "tolerance> asks " +
+                format_number(parameters.uzawa_tolerance) +
+                "): the Newton steps no longer improve v, and the violation "
+                "(" +
                 format_number(record.violation) + ") and complementarity (" +
                 format_number(record.complementarity) +
-                ") are below the tolerance, and the multiplier changes stay "
-                "at " +
-                format_number(largest_change(record, contact.friction)) +
-                " (tolerance " + format_number(parameters.uzawa_tolerance) +
-                ")");
+                ") are below the tolerance");
             return statistics;
           }
         // A slow, steady contraction: a mode of v that only the proximal

@@ -128,8 +128,9 @@ namespace dualcontact
   }
 
   /**
-   * The exact line search of the Newton iteration (doc/theory.md §3.3). Along
-   * a descent direction the merit function phi(a) = M_k(v + a d) is a
+   * The minimiser along a direction, for the line search of the Newton
+   * iteration when the full step fails Armijo's test (doc/theory.md §3.3).
+   * Along a descent direction the merit function phi(a) = M_k(v + a d) is a
    * convex, C^1, piecewise quadratic; `derivatives(a)` returns (phi'(a),
    * phi''(a)) (the second from the right). phi'(0) < 0. Returns the
    * minimiser of phi on a > 0: the root of the increasing, piecewise linear

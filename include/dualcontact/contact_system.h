@@ -104,12 +104,14 @@ namespace dualcontact
   /** One step of one loop: a row of iterations.csv. */
   struct IterationRecord
   {
-    Loop                    loop          = Loop::newton;
-    unsigned int            cycle         = 0;
-    unsigned int            step          = 1; // of the load path
-    unsigned int            uzawa_step    = 0;
-    unsigned int            index         = 0; // Newton or threshold step
-    unsigned int            newton_steps  = 0; // uzawa, threshold rows
+    Loop         loop         = Loop::newton;
+    unsigned int cycle        = 0;
+    unsigned int step         = 1; // of the load path
+    unsigned int uzawa_step   = 0;
+    unsigned int index        = 0;     // Newton or threshold step
+    unsigned int newton_steps = 0;     // uzawa, threshold rows
+    bool newton_at_floor      = false; // uzawa: its Newton iteration stopped at
+                                       // the round-off floor of the matrix
     unsigned int            uzawa_steps   = 0; // threshold rows
     unsigned int            cg_iterations = 0;
     unsigned int            amg_setups    = 0;

@@ -1,7 +1,8 @@
 // The Newton iteration (loop 3, doc/theory.md §3.3): one proximal step of the
 // Uzawa iteration, i.e. the minimisation of the piecewise-quadratic, C^1,
-// strongly convex functional M_k(v) by a semi-smooth Newton method with an
-// exact line search. Each Newton step is one CG solve with algebraic
+// strongly convex functional M_k(v) by a semi-smooth Newton method with a
+// line search (Armijo's test on the full step, else the minimiser along the
+// direction). Each Newton step is one CG solve with algebraic
 // multigrid; the AMG hierarchy is reused while the contact statuses hardly
 // change.
 #ifndef dualcontact_newton_solver_h
@@ -27,7 +28,9 @@ namespace dualcontact
     unsigned int newton_steps  = 0;
     unsigned int cg_iterations = 0;
     unsigned int amg_setups    = 0;
-    SolveTimes   times; // all but `multipliers`
+    // it stopped at the round-off floor of the matrix, above its target
+    bool       at_floor = false;
+    SolveTimes times; // all but `multipliers`
   };
 
   template <int dim>
@@ -86,6 +89,55 @@ namespace dualcontact
 
   private:
     /**
+     * The force scale F_ref the gradient is measured against: the smaller
+     * of the load |b| and the contact forces |m_s (l1_s, l2_s)| (the
+     * initial overlap's force without a load), not below the previous load
+     * step's contact forces.
+     */
+    double
+    force_reference(const ContactSet<dim> &contact) const;
+
+    /**
+     * At v: z and y, the gradient (and its smooth part), the branch of the
+     * generalised Hessian at every node (`status`, the previous one kept in
+     * `previous_status`) and their count in `record`. Returns |grad M_k|.
+     */
+    double
+    evaluate(const ContactSet<dim>               &contact,
+             const TrilinosWrappers::MPI::Vector &v,
+             IterationRecord                     &record);
+
+    /**
+     * Whether the gradient of Newton step j has stalled at the round-off
+     * floor of the matrix: full steps that do not halve it, at unchanged
+     * statuses, within 10^3 of the target. Notes the floor once.
+     */
+    bool
+    at_roundoff_floor(const unsigned int j,
+                      const double       gradient_norm,
+                      const double       target,
+                      const double       reference,
+                      IterationObserver *observer);
+
+    /** Throws if step j is past the steps allowed, naming likely causes. */
+    void
+    check_step_limit(const unsigned int     j,
+                     const ContactSet<dim> &contact,
+                     const IterationRecord &record,
+                     const double           relative_target) const;
+
+    /**
+     * The Newton direction H d = -grad by CG with AMG to the relative
+     * tolerance `forcing`, with H = K + the contact terms at `status`;
+     * reuses the AMG hierarchy where it serves. Fills `direction`.
+     */
+    void
+    solve_for_direction(const ContactSet<dim> &contact,
+                        const double           forcing,
+                        IterationRecord       &record,
+                        NewtonStatistics      &statistics);
+
+    /**
      * grad M_k(v) = K v - b - chi M v^k + sum_s m_s ((z_s)^+ n + T
      * proj_g(y_s)), condensed (constrained rows zero). `smooth` gets the
      * first part alone (the line search needs it).
@@ -135,6 +187,23 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector   rhs; // b + chi M v^k
     std::vector<double>             z;   // l1 + r (v_n - g0) per node
     std::vector<Tensor<1, dim - 1>> y;   // l2 + r v_t per node
+    // the gradient, its smooth part, the Newton direction and -gradient
+    TrilinosWrappers::MPI::Vector smooth_gradient, gradient, direction,
+      newton_rhs;
+    // the Hessian's branch per node at this and at the previous step
+    std::vector<unsigned char> status, previous_status;
+    // the previous step's length and gradient, how many full steps in a
+    // row have stalled (at unchanged statuses, and at any), and how many
+    // steps the line search cut short
+    struct Progress
+    {
+      double       previous_alpha    = 0.;
+      double       previous_gradient = 0.;
+      unsigned int stalled           = 0;
+      unsigned int stalled_switching = 0;
+      unsigned int short_steps       = 0;
+    };
+    Progress progress;
 
     // the entries add_contact_terms() added to K, and the multiple of M
     struct ContactEntry

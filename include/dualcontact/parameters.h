@@ -286,7 +286,7 @@ namespace dualcontact
     double       proximal        = 1e-3; // chi_rel: chi = chi_rel E / L^2
     double       uzawa_tolerance = 1e-8;
     unsigned int max_uzawa_steps = 500;
-    // the Newton iteration (semi-smooth, with an exact line search)
+    // the Newton iteration (semi-smooth, with a line search)
     double       newton_tolerance_factor    = 1e-2;
     double       newton_initial_tolerance   = 1e-2;
     double       newton_tolerance_reduction = 0.5;

@@ -123,17 +123,19 @@ namespace dualcontact
       "Maximum Newton steps",
       "50",
       EntryPattern::whole_number(1),
-      "The Newton iteration gives up (with an error) after this many steps "
-      "in one Uzawa step [-], unless the line search is cutting its steps "
-      "short at changes of the node statuses (gross slip with a large r): "
-      "then it goes on, at most one more step per contact node.");
+      "The Newton iteration gives up (with an error) after this many full "
+      "steps in one Uzawa step [-]. Steps that the line search cuts short "
+      "at a change of the node statuses (gross slip with a large r) come "
+      "on top, at most one per contact node.");
     declarer.declare_entry(
       "Line search",
       "true",
       EntryPattern::boolean(),
-      "Exact line search on the Uzawa step's functional (a convex "
-      "piecewise quadratic along each Newton direction); makes "
-      "Newton globally convergent. false: full steps.");
+      "Line search on the Uzawa step's functional (a convex piecewise "
+      "quadratic along each Newton direction): the full step when it "
+      "passes Armijo's sufficient-decrease test, else the minimiser along "
+      "the direction; makes Newton globally convergent. false: full "
+      "steps.");
     declarer.declare_entry(
       "AMG rebuild fraction",
       "0.05",
