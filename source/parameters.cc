@@ -244,9 +244,9 @@ namespace dualcontact
     // The points and vectors whose declared defaults are 2D, with their 3D
     // defaults: in a 3D scene an entry it does not give takes these, so
     // that a 3D scene states only what differs (a foundation z = 0 with
-    // the normal +z, the unit cube, shapes about the origin). Set into the
-    // handler, so that the listing (parameters.prm) repeats the run. An
-    // entry the scene sets keeps its value, even one equal to the 2D
+    // the normal +z, the unit cube, shapes about the origin, no body force).
+    // Set into the handler, so that the listing (parameters.prm) repeats the
+    // run. An entry the scene sets keeps its value, even one equal to the 2D
     // default: its count of values is then checked like any other's.
     void
     apply_3d_defaults(ParameterHandler &prm, const std::set<std::string> &set)
@@ -260,7 +260,8 @@ namespace dualcontact
         {{"Geometry", "Lower left corner", "0, 0, 0"}},
         {{"Geometry", "Upper right corner", "1, 1, 1"}},
         {{"Geometry", "Subdivisions", "1, 1, 1"}},
-        {{"Geometry", "Center", "0, 0, 0"}}};
+        {{"Geometry", "Center", "0, 0, 0"}},
+        {{"Loads", "Body force", "0; 0; 0"}}};
       std::vector<std::array<std::string, 3>> all = defaults;
       for (const std::string &name : obstacle_names())
         for (const auto &entry : obstacle_kind(name).defaults_3d)

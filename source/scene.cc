@@ -114,12 +114,10 @@ namespace dualcontact
     const std::string space     = dim == 2 ? "x,y" : "x,y,z";
     const std::string variables = space + (of_time ? ",t" : "");
 
-    // a vector of zeros of either dimension, such as the default "0; 0",
-    // is zero in 2D and 3D alike
+    // the count is checked whatever the values: '0' or '0; 0' for a 3D
+    // vector is as wrong as '1; 2' (a 3D scene's default body force is
+    // '0; 0; 0', Parameters::use)
     const auto n_given = Utilities::split_string_list(expression, ';').size();
-    if (n_components > 1 && n_given > 1 && n_given <= 3 &&
-        is_zero_expression(expression))
-      return std::make_unique<Functions::ZeroFunction<dim>>(n_components);
     if (n_given != n_components)
       throw InputError("The entry <" + entry + "> needs " +
                          std::to_string(n_components) +
@@ -289,43 +287,28 @@ namespace dualcontact
     // the loads follow the load path (doc/theory.md §11)
     const std::vector<double> times = parameters.load_path.step_times();
 
+    // A load or a prescribed displacement: its function, or none where it
+    // is zero (nothing to assemble or to interpolate), with the count of
+    // its components checked in either case.
+    const auto load = [&](const std::string &expression,
+                          const std::string &entry) {
+      auto function =
+        make_function<dim>(expression, dim, material, entry, length, times);
+      return is_zero_expression(expression) ? nullptr : std::move(function);
+    };
     for (const types::boundary_id id : ids_with(BoundaryCondition::fixed))
       {
         const auto it = boundary.displacements.find(id);
-        if (it != boundary.displacements.end() &&
-            !is_zero_expression(it->second))
-          displacements[id] =
-            make_function<dim>(it->second,
-                               dim,
-                               material,
-                               "Boundary conditions/Displacements",
-                               length,
-                               times);
+        if (it != boundary.displacements.end())
+          if (auto function =
+                load(it->second, "Boundary conditions/Displacements"))
+            displacements[id] = std::move(function);
       }
     for (const types::boundary_id id : ids_with(BoundaryCondition::traction))
-      {
-        const std::string &expression = boundary.tractions.at(id);
-        if (!is_zero_expression(expression))
-          tractions[id] = make_function<dim>(expression,
-                                             dim,
-                                             material,
-                                             "Boundary conditions/Tractions",
-                                             length,
-                                             times);
-      }
-    if (!is_zero_expression(parameters.loads.body_force))
-      body_force_ = make_function<dim>(parameters.loads.body_force,
-                                       dim,
-                                       material,
-                                       "Loads/Body force",
-                                       length,
-                                       times);
-    else
-      make_function<dim>(parameters.loads.body_force,
-                         dim,
-                         material,
-                         "Loads/Body force",
-                         length); // checks the component count
+      if (auto function =
+            load(boundary.tractions.at(id), "Boundary conditions/Tractions"))
+        tractions[id] = std::move(function);
+    body_force_ = load(parameters.loads.body_force, "Loads/Body force");
     if (!parameters.exact.displacement.empty())
       exact_ = make_function<dim>(parameters.exact.displacement,
                                   dim,

@@ -79,8 +79,10 @@ namespace dualcontact
     if (!times.empty())
       return times;
     std::vector<double> uniform(n_steps);
+    // the fraction first: T (n + 1) would overflow for T near the largest
+    // double, while T ((n + 1) / N) <= T stays finite
     for (unsigned int n = 0; n < n_steps; ++n)
-      uniform[n] = end_time * (n + 1) / n_steps;
+      uniform[n] = end_time * (static_cast<double>(n + 1) / n_steps);
     return uniform;
   }
 

@@ -16,7 +16,8 @@ namespace dualcontact
       "Body force f per unit volume, 'f_x; f_y' (one component per "
       "dimension) [force/length^3]; each an expression in x, y (z) and the "
       "time t of the load path (<Load path>), with the constants pi, E, nu, "
-      "lambda, mu. All zero: no body force is assembled.");
+      "lambda, mu. All zero: no body force is assembled. (3D default: 0; 0; "
+      "0.)");
     declarer.leave_subsection();
   }
 

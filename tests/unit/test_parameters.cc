@@ -10,6 +10,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
+
 #include "test_tools.h"
 
 using namespace dualcontact;
@@ -500,6 +503,85 @@ TEST_CASE("A body force with the wrong number of components is rejected "
     error_building_scene("subsection Loads\n  set Body force = 0\nend\n");
   REQUIRE(zero.thrown);
   CHECK(zero.code == exit_invalid_value);
+}
+
+TEST_CASE("A traction, a displacement or a body force with the wrong number "
+          "of components is rejected whatever its values; a 3D scene's "
+          "default body force has three",
+          "[parameters][errors][scene][3d]")
+{
+  const auto error_3d = [](const std::string &text) {
+    return catch_input_error([&] {
+      Parameters parameters;
+      parameters.read_string(text);
+      Scene<3> scene(parameters);
+    });
+  };
+  const std::string box_3d =
+    "subsection Geometry\n  set Dimension = 3\nend\n"
+    "subsection Boundary conditions\n  set Conditions = 4: contact, 5: "
+    "traction, 1: fixed\n";
+  for (const std::string &tractions : {"5: 0; 0", "5: 0", "5: 0; -1"})
+    {
+      const CaughtError error =
+        error_3d(box_3d + "  set Tractions = " + tractions + "\nend\n");
+      INFO("3D, Tractions = " << tractions);
+      REQUIRE(error.thrown);
+      CHECK(error.code == exit_invalid_value);
+      CHECK(contains(error.message, "Tractions"));
+      CHECK(contains(error.message, "needs 3"));
+    }
+  const CaughtError displacement =
+    error_3d(box_3d + "  set Tractions = 5: 0; 0; -1\n  set Displacements = "
+                      "1: 0; 0\nend\n");
+  REQUIRE(displacement.thrown);
+  CHECK(displacement.code == exit_invalid_value);
+  CHECK(contains(displacement.message, "Displacements"));
+  // the same scene with three components each builds, with the default
+  // body force (three zeros in 3D) and no body force assembled
+  {
+    Parameters parameters;
+    parameters.read_string(box_3d + "  set Tractions = 5: 0; 0; 0\n  set "
+                                    "Displacements = 1: 0; 0; 0\nend\n");
+    Scene<3> scene(parameters);
+    CHECK_FALSE(scene.effects().body_force);
+    CHECK_FALSE(scene.effects().tractions);
+  }
+  // a 2D traction of one zero, and a 3D body force written with two zeros
+  const CaughtError one_zero = error_building_scene(
+    "subsection Boundary conditions\n  set Conditions = 2: contact, 3: "
+    "traction\n  set Tractions = 3: 0\nend\n");
+  REQUIRE(one_zero.thrown);
+  CHECK(one_zero.code == exit_invalid_value);
+  const CaughtError body_force = error_3d(
+    box_3d + "  set Tractions = 5: 0; 0; -1\nend\nsubsection Loads\n  set "
+             "Body force = 0; 0\nend\n");
+  REQUIRE(body_force.thrown);
+  CHECK(contains(body_force.message, "Body force"));
+}
+
+TEST_CASE("The uniform times of a load path stay finite up to the largest "
+          "End time",
+          "[parameters][load_path]")
+{
+  Parameters parameters;
+  parameters.read_string("subsection Load path\n  set Number of steps = 4\n"
+                         "  set End time = 1e308\nend\n");
+  const std::vector<double> times = parameters.load_path.step_times();
+  REQUIRE(times.size() == 4);
+  for (unsigned int n = 0; n < 4; ++n)
+    {
+      INFO("step " << n);
+      CHECK(std::isfinite(times[n]));
+      CHECK(times[n] == Approx(0.25e308 * (n + 1)).epsilon(1e-15));
+    }
+  CHECK(times.back() == 1e308);
+  Parameters largest;
+  largest.read_string("subsection Load path\n  set Number of steps = 3\n"
+                      "  set End time = 1.7976931348623157e308\nend\n");
+  CHECK(std::isfinite(largest.load_path.step_times()[1]));
+  CHECK(largest.load_path.step_times().back() ==
+        std::numeric_limits<double>::max());
 }
 
 TEST_CASE("An expression that does not parse is rejected when the scene is "
