@@ -43,12 +43,11 @@ namespace dualcontact
   {
     TimerOutput::Scope    t(computing_timer, "measure contact zone");
     ContactZoneRecord     record;
-    double                force = 0, peak = 0;
+    double                peak = 0;
     Tensor<1, dim>        on_obstacle;
     std::vector<ZoneNode> local;
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
-        force += contact_set.nodes[s].weight * contact_set.l1[s];
         on_obstacle += contact_set.nodal_force(s);
         peak = std::max(peak, contact_set.l1[s]);
         ZoneNode node;
@@ -60,9 +59,14 @@ namespace dualcontact
         node.status = contact_set.status(s);
         local.push_back(node);
       }
-    record.contact_force = Utilities::MPI::sum(force, mpi_communicator);
     for (unsigned int c = 0; c < dim; ++c)
       on_obstacle[c] = Utilities::MPI::sum(on_obstacle[c], mpi_communicator);
+    // the contact force is the resultant's component along Gamma_C's mean
+    // direction, the direction of the applied load it balances: a sum of
+    // the pressures m_s l1_s would also count the parts of the normals that
+    // cancel (a curved zone), or that point elsewhere (a node beside an
+    // obstacle's corner)
+    record.contact_force = on_obstacle * contact_set.normal;
     // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s),
     // and its part in the tangent plane of Gamma_C's mean direction
     const Tensor<1, dim> resultant = -on_obstacle;

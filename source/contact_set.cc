@@ -32,13 +32,19 @@ namespace dualcontact
 
     // Weights m_s = int_{Gamma_C} phi_s, with the weight of hanging nodes
     // handed to their masters. Every component carries the same weight.
+    // The body's outward normal at a node, the mean int_{Gamma_C} phi_s nu
+    // of the faces' normals, is assembled alike, component c of it on the
+    // node's DoF of component c.
     TrilinosWrappers::MPI::Vector        weights(owned, comm);
+    TrilinosWrappers::MPI::Vector        body_normals(owned, comm);
     const QGauss<dim - 1>                quadrature(fe.degree + 1);
     FEFaceValues<dim>                    fe_face(mapping,
                               fe,
                               quadrature,
-                              update_values | update_JxW_values);
+                              update_values | update_normal_vectors |
+                                update_JxW_values);
     Vector<double>                       local_weights(fe.n_dofs_per_cell());
+    Vector<double>                       local_normals(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
 
     // Candidate nodes: cell-local support points on contact faces, grouped
@@ -56,13 +62,23 @@ namespace dualcontact
               cell->get_dof_indices(dof_indices);
               fe_face.reinit(cell, f);
               local_weights = 0;
+              local_normals = 0;
               for (const unsigned int q : fe_face.quadrature_point_indices())
                 for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                  local_weights(i) +=
-                    fe_face.shape_value(i, q) * fe_face.JxW(q);
+                  {
+                    const double phi_dx =
+                      fe_face.shape_value(i, q) * fe_face.JxW(q);
+                    local_weights(i) += phi_dx;
+                    local_normals(i) +=
+                      phi_dx * fe_face.normal_vector(
+                                 q)[fe.system_to_component_index(i).first];
+                  }
               hanging_node_constraints.distribute_local_to_global(local_weights,
                                                                   dof_indices,
                                                                   weights);
+              hanging_node_constraints.distribute_local_to_global(local_normals,
+                                                                  dof_indices,
+                                                                  body_normals);
 
               std::map<unsigned int, ContactNode<dim>> on_face;
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -80,6 +96,7 @@ namespace dualcontact
                 candidates.emplace(node.dofs[0], node);
             }
     weights.compress(VectorOperation::add);
+    body_normals.compress(VectorOperation::add);
 
     nodes.clear();
     types::global_dof_index hanging = 0;
@@ -98,6 +115,10 @@ namespace dualcontact
         if (!any_free || !(weights[key] > 0.))
           continue;
         node.weight = weights[key];
+        for (unsigned int c = 0; c < dim; ++c)
+          node.body_normal[c] = body_normals[node.dofs[c]];
+        if (node.body_normal.norm() > 0.)
+          node.body_normal /= node.body_normal.norm();
         nodes.push_back(node);
       }
     place_obstacle(scene, comm);
@@ -153,14 +174,30 @@ namespace dualcontact
   ContactSet<dim>::place_obstacle(const Scene<dim> &scene, const MPI_Comm comm)
   {
     obstacle               = &scene.obstacle();
-    unsigned int no_normal = 0;
+    unsigned int no_normal = 0, corners = 0;
     for (auto &node : nodes)
       {
         node.gap0                            = scene.initial_gap(node.position);
         std::tie(node.normal, node.tangents) = basis_at(node.position);
+        // Where the obstacle's nearest point is a corner or an edge, its
+        // normal (from the corner toward the node) is no normal of its
+        // surface: a smooth surface touched by a corner is pushed along its
+        // own normal, and the gap stays the distance to the corner
+        // (doc/theory.md §10). The classical punch problems keep the
+        // surface beside the punch free, as this does; the direction from
+        // the corner would turn the punch's side into a wall that the
+        // surface beside it meets.
+        if (obstacle->has_corner_near(node.position) &&
+            node.body_normal.norm() > 0.5)
+          {
+            node.normal   = node.body_normal;
+            node.tangents = tangent_basis(node.normal);
+            ++corners;
+          }
         if (!(node.normal.norm() > 0.5))
           ++no_normal;
       }
+    n_corner = Utilities::MPI::sum(corners, comm);
     if (Utilities::MPI::sum(no_normal, comm) > 0)
       throw InputError(
         "The obstacle has no usable normal at " +

@@ -39,6 +39,8 @@ namespace dualcontact
     // plane orthogonal to it (tangent_basis in obstacle.h)
     Tensor<1, dim>                      normal;
     std::array<Tensor<1, dim>, dim - 1> tangents;
+    // the body's outward unit normal at the node (the mean of its faces')
+    Tensor<1, dim> body_normal;
   };
 
   /**
@@ -216,6 +218,16 @@ namespace dualcontact
       return n_hanging;
     }
 
+    /**
+     * Contact nodes (all ranks) whose nearest obstacle point is a corner or
+     * an edge: they take the body's normal (place_obstacle()).
+     */
+    unsigned int
+    n_corner_nodes() const
+    {
+      return n_corner;
+    }
+
     /** Smallest diameter of a face on Gamma_C (over all ranks). */
     double
     min_face_diameter() const
@@ -295,6 +307,7 @@ namespace dualcontact
   private:
     types::global_dof_index n_global  = 0;
     types::global_dof_index n_hanging = 0;
+    unsigned int            n_corner  = 0;
     double                  h_min_    = 0.;
     double                  measure_  = 0.;
   };

@@ -48,6 +48,17 @@ namespace dualcontact
     normal(const Point<dim> &x) const = 0;
 
     /**
+     * Whether the point of the surface nearest to x is a corner or an edge,
+     * where the surface has no normal (m jumps across it). A contact node
+     * there takes its own surface's normal (ContactSet::place_obstacle()).
+     */
+    virtual bool
+    has_corner_near(const Point<dim> &) const
+    {
+      return false;
+    }
+
+    /**
      * Whether the surface is a plane: then every contact node has the same
      * normal, and a tangential load can only be held by friction (the
      * equilibrium check before a solve uses that).
@@ -96,6 +107,12 @@ namespace dualcontact
     normal(const Point<dim> &x) const
     {
       return shape->normal(x - translation);
+    }
+
+    bool
+    has_corner_near(const Point<dim> &x) const
+    {
+      return shape->has_corner_near(x - translation);
     }
 
     const Obstacle<dim> &

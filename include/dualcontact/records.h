@@ -44,8 +44,9 @@ namespace dualcontact
   struct SolveRecord : ContactStatistics
   {
     types::global_dof_index n_contact_nodes   = 0;
-    types::global_dof_index n_hanging_contact = 0;  // on Gamma_C, all ranks
-    double                  r                 = 0.; // augmentation used
+    types::global_dof_index n_hanging_contact = 0; // on Gamma_C, all ranks
+    unsigned int            n_corner_contact = 0; // beside an obstacle's corner
+    double                  r                = 0.; // augmentation used
     double                  r_t = 0.; // tangential augmentation (with friction)
     double                  chi = 0.; // proximal weight used
     // the applied load toward the foundation (tractions and body force;
@@ -59,7 +60,8 @@ namespace dualcontact
   /** measure_contact_zone(): the contact zone at convergence. */
   struct ContactZoneRecord
   {
-    double contact_force = 0.; // sum_s m_s l1_s
+    // the force of the body on the obstacle along Gamma_C's mean normal
+    double contact_force = 0.;
     // the force of the foundation on the body, a vector
     std::array<double, 3> resultant{};
     double                tangential_force =

@@ -68,6 +68,41 @@ namespace dualcontact
         return gradient / norm;
       }
 
+      bool
+      has_corner_near(const Point<dim> &x) const override
+      {
+        // The nearest surface point p = x - d(x) m(x), and the normals at
+        // points around it on the body's side (a circle, or two cones in
+        // 3D, of radius rho about p, up to 80 degrees from m): on a smooth
+        // surface they stay within rho/R of m, at a corner or an edge they
+        // turn by its angle. 100 times the difference step keeps the
+        // normals accurate; 20 degrees flags corners of the obstacle but no
+        // curvature of radius above about 3 rho.
+        const Tensor<1, dim> m = normal(x);
+        if (!(m.norm() > 0.5))
+          return false;
+        const Point<dim>   p         = x - distance(x) * m;
+        const double       rho       = 100. * step;
+        const auto         t         = tangent_basis(-m);
+        const double       cos_limit = std::cos(20. * numbers::PI / 180.);
+        const unsigned int n_around  = dim == 2 ? 1 : 8;
+        for (const double degrees : {-80., -40., 40., 80.})
+          for (unsigned int k = 0; k < n_around; ++k)
+            {
+              const double   theta = degrees * numbers::PI / 180.;
+              const double   phi   = 2. * numbers::PI * k / n_around;
+              Tensor<1, dim> side  = t[0];
+              if (dim == 3)
+                side = std::cos(phi) * t[0] + std::sin(phi) * t[dim - 2];
+              const Tensor<1, dim> e =
+                std::cos(theta) * m + std::sin(theta) * side;
+              const Tensor<1, dim> there = normal(p + rho * e);
+              if (there.norm() > 0.5 && there * m < cos_limit)
+                return true;
+            }
+        return false;
+      }
+
     private:
       std::string                    expression;
       std::unique_ptr<Function<dim>> function;

@@ -131,6 +131,12 @@ namespace dualcontact
             "   " + count(solve.n_hanging_contact) +
               " hanging nodes on Gamma_C (no contact condition of their "
               "own)\n");
+        if (solve.n_corner_contact > 0)
+          lines.add(85,
+                    "   " +
+                      count(types::global_dof_index(solve.n_corner_contact)) +
+                      " contact nodes face a corner or an edge of the "
+                      "obstacle and take the body's normal\n");
         lines.add(110,
                   "   Uzawa contraction rate " + scientific(solve.rate) +
                     ", remaining error of l1 about " +
@@ -454,9 +460,10 @@ namespace dualcontact
       register_report_quantity<ContactArea>("contact area");
 
     /**
-     * An obstacle moved by <Obstacle/Displacement>, or a load path of
-     * several steps: obstacle_force_x, _y (_z), the force of the body on
-     * the obstacle.
+     * A scene with friction, an obstacle moved by <Obstacle/Displacement>,
+     * or a load path of several steps: obstacle_force_x, _y (_z), the
+     * force of the body on the obstacle with its sign (tangential_force is
+     * the magnitude of its tangential part).
      */
     template <int dim>
     class ObstacleForce : public ReportQuantity<dim>
@@ -468,7 +475,8 @@ namespace dualcontact
       has(const Parameters &parameters, const Scene<dim> &scene)
       {
         return scene.effects().contact &&
-               (scene.obstacle_moves() ||
+               (scene.effects().friction_law().has_friction() ||
+                scene.obstacle_moves() ||
                 parameters.load_path.step_times().size() > 1);
       }
 

@@ -162,6 +162,37 @@ TEST_CASE("A rigid flat punch given by its signed distance: the pressure "
   CHECK(worst < 0.02);
 }
 
+TEST_CASE("A flat punch at degrees 1, 2 and 3: the nodes beside its corners "
+          "take the body's normal, so the force on it is vertical and equal "
+          "to the load on every mesh",
+          "[obstacle][punch][degree]")
+{
+  // The nodes of the free surface beside the punch have the punch's corner
+  // as their nearest obstacle point. With the direction from the corner as
+  // their normal they would meet the punch's side: the surface beside a
+  // pressed punch moves inward by (1 - 2 nu)(1 + nu) P / (2 E) = 2.6e-4, and
+  // at degree 3 a Gauss-Lobatto node lies closer than that to the corner.
+  for (const unsigned int degree : {1u, 2u, 3u})
+    {
+      Run run("flat_punch.prm",
+              "subsection Discretization\n  set Polynomial degree = " +
+                std::to_string(degree) + "\nend\n");
+      REQUIRE(run.problem->results().size() == 2);
+      for (const CycleResult &cycle : run.problem->results())
+        {
+          INFO("degree " << degree << ", cycle " << cycle.mesh.cycle << ", "
+                         << cycle.mesh.n_dofs << " DoFs: contact force "
+                         << cycle.zone.contact_force << ", resultant ("
+                         << cycle.zone.resultant[0] << ", "
+                         << cycle.zone.resultant[1] << ")");
+          CHECK(cycle.zone.contact_force == Approx(0.5).epsilon(1e-9));
+          CHECK(-cycle.zone.resultant[1] == Approx(0.5).epsilon(1e-9));
+          CHECK(std::abs(cycle.zone.resultant[0]) < 1e-9);
+        }
+      CHECK(run.problem->contact().n_corner_nodes() > 0);
+    }
+}
+
 TEST_CASE("A rigid sphere pressed into a block (3D): Hertz's p0 within 1 % "
           "on the finest mesh, a within one contact cell, the force exact",
           "[obstacle][hertz][3d]")
