@@ -268,9 +268,11 @@ namespace dualcontact
     // quadratic with
     //   phi'(a) = q1 + a q2 + sum_s m_s ((z_s + a r dn_s)^+ dn_s
     //                                   + proj_g(y_s + a r dt_s).dt_s),
-    // and its minimiser is found exactly (doc/theory.md §3.3: the line
-    // search makes Newton globally convergent; an exact one also lets a step
-    // that meets many new contact nodes go as far as it should).
+    // The full step is taken when it passes Armijo's sufficient-decrease
+    // test, else the minimiser of phi, found by safeguarded Newton steps on
+    // phi' (doc/theory.md §3.3: the line search makes Newton globally
+    // convergent; the minimiser lets a step that meets many new contact
+    // nodes go as far as it should).
     const MPI_Comm                  comm = rhs.get_mpi_communicator();
     const double                    r    = system->r;
     const double                    r_t  = system->r_t;
@@ -337,7 +339,7 @@ namespace dualcontact
         }
       return q1 + 0.5 * q2 + Utilities::MPI::sum(local, comm);
     };
-    // The full step when it decreases M_k enough, else the exact minimiser.
+    // The full step when it decreases M_k enough, else the minimiser.
     if (!parameters.line_search ||
         merit_change() <= 1e-4 * derivatives(0.).first)
       return 1.;

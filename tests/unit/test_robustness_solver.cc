@@ -559,7 +559,9 @@ TEST_CASE("Tolerances below the round-off floor of the Newton matrix end at "
       CHECK(c.penetration <= 1e-9);
       CHECK(c.complementarity <= 1e-9);
       CHECK(r.reactions.imbalance <= 1e-8);
-      CHECK(r.solve.uzawa_steps <= 60);
+      // all Uzawa steps of the run (the nested threshold iteration's too):
+      // measured at most 107 (newton_floor_two_ranks, 7 threshold steps)
+      CHECK(r.solve.uzawa_steps <= 160);
       const LawCheck law = check_law(*a.run);
       CHECK(law.excess < 1e-8);
       // the floor, where one was met, is named with the accuracy reached
