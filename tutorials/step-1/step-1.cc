@@ -228,8 +228,11 @@ namespace Step1
     // solve: the mesh (the half disc, refined toward the plane), the degrees
     // of freedom and the contact nodes with their weights
     //   m_s = int_{Gamma_C} phi_s,
-    // (the nodal quadrature of doc/theory.md §4), and the matrices K = A +
-    // chi M, M and the load b. transfer_fields() carries fields from a
+    // (the nodal quadrature of doc/theory.md §4: ContactSet::setup adds the
+    // face integrals through the hanging-node constraints, so a hanging
+    // node's share goes to the nodes it hangs on and a hanging node is no
+    // contact node), and the matrices K = A + chi M, M (lumped) and the
+    // load b. transfer_fields() carries fields from a
     // coarser mesh; on the first mesh there is none, so it does nothing.
     ContactProblem<dim> problem(parameters, comm, std::cout);
     problem.make_grid();
@@ -267,8 +270,9 @@ namespace Step1
 
     // The Uzawa iteration. Without friction the problem is to minimise the
     // energy J(v) = 1/2 a(v,v) - L(v) subject to v_n(x_s) <= g0_s at every
-    // contact node (v_n = v.n, n the body's normal toward the plane, g0 the
-    // initial gap). The modified Lagrangian (doc/theory.md §2) turns the
+    // contact node (v_n = v.n with n = -m, the plane's normal m reversed: one
+    // vector, (0, -1), for every node, not the body's outward normal; g0_s =
+    // (x_s - p).m the initial gap, p a point of the plane). The modified Lagrangian (doc/theory.md §2) turns the
     // constraint into a penalty-like term that is exact at its fixed point:
     //
     //   M(v; l1) = J(v) + sum_s m_s/(2r) [ ((l1_s + r (v_n(x_s) - g0_s))^+)^2
@@ -289,7 +293,15 @@ namespace Step1
         // Step 1, the proximal step (doc/theory.md §3.2):
         //
         //   v^{k+1} ~ argmin_v M_k(v),
-        //   M_k(v) = M(v; l1^k) + (chi/2) ||v - v^k||^2_{L2(Omega)}.
+        //   M_k(v) = M(v; l1^k) + (chi/2) ||v - v^k||^2_M,
+        //
+        // ||w||^2_M = w^T M w with the lumped (diagonal) mass M and chi =
+        // chi_rel E / L^2: the source paper's term is the L2(Omega) norm with
+        // weight 1. The weight chi gives the term the units of an energy and
+        // makes chi_rel the same in any units; the lumped M is one vector, an
+        // L2 norm with the vertex quadrature, equivalent to the exact one
+        // (README, section 5). Neither moves the fixed point, where the term
+        // vanishes.
         //
         // Why the chi term: nothing holds the disc sideways. Without
         // friction the contact pushes only along n, so the x-translation
@@ -307,9 +319,13 @@ namespace Step1
         // M_k is minimised by the Newton iteration (doc/theory.md §3.3):
         // gradient K v - b - chi M v^k + sum_s m_s (l1_s + r(v_n - g0_s))^+ n,
         // generalised Hessian K + sum_{active s} m_s r n n^T, one CG + AMG
-        // solve per step and an exact line search. Its tolerance shrinks
-        // geometrically with k, so that the errors of the proximal steps are
-        // summable, as the convergence theorem needs.
+        // solve per step, and a line search (the full step if it passes
+        // Armijo's test, else the minimiser along the direction). It stops at
+        // |G| <= tau_k = f_ref max(1e-2 tol, min(1e-2 0.5^(k-1), 1e-2
+        // |G(v^k)| / f_ref)) (k from 1 here; f_ref the force scale |b|, or
+        // min(|b|, |(m_s l1_s)_s|) once there is a pressure; doc/theory.md
+        // §6): the geometric envelope 1e-2 0.5^(k-1) makes the errors of the
+        // proximal steps summable, as the convergence theorem needs.
         v_previous = v;
         const NewtonStatistics inner =
           uzawa.proximal_step(system, contact, v_previous, v, k);
@@ -344,7 +360,9 @@ namespace Step1
 
         // The stopping test (doc/theory.md §6): the relative changes
         //   d(l1) = |l1^{k+1} - l1^k| / |l1^{k+1}|,
-        //   d(v)  = |v^{k+1} - v^k| / |v^{k+1}|,
+        //   d(v)  = |P (v^{k+1} - v^k)| / |v^{k+1}|,
+        // P the projection that removes the rigid motions nothing holds (the
+        // x-translation here; update_multipliers above),
         // and the relative violation max_s (v_n - g0_s)^+ / |v|_inf all at
         // most <Solver/Uzawa tolerance>. A small d(v) also means that the
         // proximal term, chi M (v^{k+1} - v^k), has become negligible: the
@@ -445,11 +463,14 @@ namespace Step1
     // ContactProblem each (r enters only the Uzawa iteration, but a new
     // problem is the honest way to start from zero). doc/theory.md §5
     // predicts: on a fixed active set an error mode of boundary compliance
-    // c is damped by 1/(1 + r c) per Uzawa step, so small r means many
-    // steps (their number grows like 1/r_rel); large r means few steps,
-    // but the Newton matrix K + sum m_s r n n^T becomes stiff on the
-    // contact nodes, its condition number grows, and each proximal step
-    // costs more Newton steps and CG iterations.
+    // c is damped by 1/(1 + r c) per Uzawa step, so the rate is about
+    // rho = 1/(1 + C r_rel) and the steps about 2 + ln(d_2/tol) / ln(1/rho)
+    // (d_2 the change of the second step): many for small r, though like
+    // 1/r_rel only where C r_rel << 1 (README, "Results": C = 1.9-2.4 is
+    // measured here); large r means few steps, but the Newton matrix K +
+    // sum m_s r n n^T becomes stiff on the contact nodes, its condition
+    // number grows, and the first proximal step costs more Newton steps
+    // (cut short by the line search) and CG iterations.
     pcout << "\nThe r study (same mesh, cold start each, Uzawa tolerance "
           << tolerance << "):\n";
     const std::vector<double> r_values = {0.1, 1., 10., 100.};
@@ -540,10 +561,12 @@ namespace Step1
     // (3) r does not change the solution, only the way to it: every run
     // stops with d(l1) <= 1e-8, and with the contraction rate rho the
     // remaining error is about d rho / (1 - rho) (doc/theory.md §6): 4e-8
-    // for the slowest run (rho = 0.8 at r_rel = 0.1), 6e-8 measured (the
+    // for the slowest run (rho = 0.8 at r_rel = 0.1), 5.6e-8 measured (the
     // stopping test uses an unweighted norm, this one the weights m_s).
-    // The bound, 100 times the Uzawa tolerance, leaves a margin of 15 for
-    // a slower run (a chi_rel of 1 gives 3e-7).
+    // The bound, 100 times the Uzawa tolerance, leaves a margin of 18; a
+    // chi_rel of 1, which slows every r_rel >= 1 to a rate of 0.67, gives
+    // 1.9e-7 on 2 ranks, 6.0e-8 on 1 (measured, `--set "Solver/Proximal
+    // parameter=1"`; the test tutorial_step-1_extension_proximal_weight).
     double spread = 0.;
     for (const ContactSolve &s : study)
       spread = std::max(spread, difference(s, main));
@@ -553,9 +576,11 @@ namespace Step1
             format("%.1e", spread) + ")");
 
     // (4) Larger r, fewer (or as many) Uzawa steps, from 0.1 to 100. Up
-    // to r_rel = 10 the count falls like 1/r_rel; beyond, it levels off
-    // (7 and 7 here), where the accuracy of the proximal steps, not r,
-    // sets it: an integer check without margin there (see the README).
+    // to r_rel = 10 the count follows the rate 1/(1 + C r_rel) (78, 15, 7:
+    // 5.2 times fewer for the first tenfold r_rel, 2.1 times for the
+    // second, not 10); beyond, it levels off (7 and 7 here), where the
+    // accuracy of the proximal steps, not r, sets it: an integer check
+    // without margin there (see the README).
     bool        monotone = true;
     std::string steps;
     for (unsigned int i = 0; i < study.size(); ++i)

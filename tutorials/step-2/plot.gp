@@ -1,5 +1,5 @@
 # The figure of step-2 (run from tutorials/step-2 after the program):
-#   newton.svg  |G|/F per Newton iterate of proximal step 1 (from v = 0,
+#   newton.svg  |G|/f_ref per Newton iterate of proximal step 1 (from v = 0,
 #               l1 = 0), by hand and by the library's NewtonSolver, and the
 #               active nodes at each iterate
 set datafile separator ','
@@ -8,7 +8,7 @@ set terminal svg size 720,480 dynamic font 'Helvetica,14'
 set output 'newton.svg'
 set title 'Proximal step 1: semi-smooth Newton by hand and by the library'
 set xlabel 'Newton iterate j'
-set ylabel '|G(v_j)| / F'
+set ylabel '|G(v_j)| / f_{ref}'
 set logscale y
 set format y '10^{%L}'
 set yrange [1e-12:1e3]

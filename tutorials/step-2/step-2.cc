@@ -6,10 +6,11 @@
  * frictionless Hertz scene of step-1: the gradient G(v) of M_k node by node,
  * the generalised Hessian H(v) (the system matrix with the contact terms of
  * the active nodes added), the Newton direction from H d = -G by CG with
- * algebraic multigrid, and the exact line search along d. At every iterate
- * it compares with the library's NewtonSolver, run on the same system from
- * the same start: gradient norms, active counts, step lengths and iterates
- * must agree to round-off (doc/theory.md §3.3).
+ * algebraic multigrid, and the line search along d (the full step if it
+ * passes Armijo's sufficient-decrease test, else the minimiser along d).
+ * At every iterate it compares with the library's NewtonSolver, run on the
+ * same system from the same start: gradient norms, active counts, step
+ * lengths and iterates must agree to round-off (doc/theory.md §3.3).
  *
  * The README has the derivation, the results and tasks for the reader.
  */
@@ -212,7 +213,7 @@ namespace Step2
     return Utilities::MPI::sum(n_active, step.rhs.get_mpi_communicator());
   }
 
-  // @sect3{The exact line search}
+  // @sect3{The line search}
   //
   // Along d, phi(alpha) = M_k(v + alpha d) is convex and piecewise
   // quadratic:
@@ -222,10 +223,11 @@ namespace Step2
   //
   // phi' is continuous, non-decreasing and linear between the breakpoints
   // alpha_s = -z_s / (r dn_s) > 0 where a node enters or leaves contact. The
-  // minimiser is the root of phi'. So: first the full step alpha = 1 if it
-  // decreases M_k enough (phi(1) - phi(0) <= 1e-4 phi'(0), the Armijo test:
-  // near the solution Newton's step is right and needs no search); else the
-  // breakpoints of all ranks, sorted; the first breakpoint where phi' >= 0,
+  // minimiser is the root of phi'. The search is not exact: first the full
+  // step alpha = 1 if it decreases M_k enough (phi(1) - phi(0) <= 1e-4
+  // phi'(0), Armijo's sufficient-decrease test: near the solution Newton's
+  // step is right and needs no search), whether or not 1 is the minimiser;
+  // only if that fails, the minimiser: the breakpoints of all ranks, sorted; the first breakpoint where phi' >= 0,
   // found by bisection over the list (one reduction per evaluation); and on
   // the piece to its left, where phi' is linear, its root
   //   alpha = alpha_lo - phi'(alpha_lo) / phi''
@@ -326,7 +328,8 @@ namespace Step2
   //      relative residual min(0.1, max(1e-12, 0.5 target / |G|)) (inexact
   //      Newton: no more accuracy than the target needs; the library's
   //      choice);
-  //   3. alpha by the exact line search, v <- v + alpha d.
+  //   3. alpha by the line search (1 if Armijo accepts the full step,
+  //      else the minimiser along d), v <- v + alpha d.
   // The CG + AMG solver is the library's ElasticSolver (smoothed aggregation
   // with the rigid-body modes as near-null space): the one a linear
   // elasticity solve of the problem uses.

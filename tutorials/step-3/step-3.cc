@@ -18,9 +18,10 @@
  *     against a search, its gradient and its generalised Hessian against
  *     finite differences, in 2D and in 3D;
  *  2. writes the threshold iteration out in its two strategies, nested (as
- *     published) and merged, on the source paper's block pressed against a
- *     rough wall (step-3.prm), and compares their cost and their solutions
- *     and shows the stick and slip zones on the wall.
+ *     published) and merged, on the project's block (prm/paper_block.prm,
+ *     with a lighter push: step-3.prm) pressed against a rough wall, and
+ *     compares their cost and their solutions and shows the stick and slip
+ *     zones on the wall.
  *
  * README.md has the derivation and the results.
  */
