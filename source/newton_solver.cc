@@ -446,9 +446,13 @@ namespace dualcontact
     // doc/robustness.md; a stall far above that is not round-off: in 3D
     // the projection onto the friction disc is not linear at fixed
     // statuses, and a few full steps can stall at 1e-2 |b|.)
+    // A stall within 10^3 of the target, or below 1e-9 F_ref (round-off
+    // for any matrix the scenes meet, however far below it a tolerance
+    // asks), is accepted.
     const bool at_floor =
       (progress.stalled >= 3 || progress.stalled_switching >= 5) &&
-      gradient_norm <= 1e3 * target && gradient_norm <= 1e-6 * reference;
+      gradient_norm <= std::max(1e3 * target, 1e-9 * reference) &&
+      gradient_norm <= 1e-6 * reference;
     if (at_floor)
       roundoff_floor = std::max(roundoff_floor, gradient_norm / reference);
     if (at_floor && !roundoff_reported && observer != nullptr)

@@ -223,9 +223,10 @@ namespace dualcontact
     // iteration is at its final tolerance and takes no step, or it stops
     // at the round-off floor of its matrix, whose gradient moves the
     // multipliers by round-off at every update), the constraint holds, and
-    // the changes of the multipliers do not shrink: the rest of them is
-    // what the inner solves leave (doc/theory.md §6), and no further Uzawa
-    // step can remove it.
+    // the changes of the multipliers do not shrink, within 10^3 of the
+    // tolerance or below 1e-8 (a tolerance far below the floor): the rest
+    // of them is what the inner solves leave (doc/theory.md §6), and no
+    // further Uzawa step can remove it.
     const std::size_t n = history.size();
     if (n < 3 || newton_envelope(n) > final_newton_tolerance())
       return false;
@@ -236,7 +237,7 @@ namespace dualcontact
     };
     return still(last) && still(before) && last.violation <= tolerance &&
            last.complementarity <= tolerance &&
-           largest_change(last, friction) <= 1e3 * tolerance &&
+           largest_change(last, friction) <= std::max(1e3 * tolerance, 1e-8) &&
            largest_change(last, friction) >=
              0.5 * largest_change(before, friction);
   }
