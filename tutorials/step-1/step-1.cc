@@ -272,8 +272,9 @@ namespace Step1
     // energy J(v) = 1/2 a(v,v) - L(v) subject to v_n(x_s) <= g0_s at every
     // contact node (v_n = v.n with n = -m, the plane's normal m reversed: one
     // vector, (0, -1), for every node, not the body's outward normal; g0_s =
-    // (x_s - p).m the initial gap, p a point of the plane). The modified Lagrangian (doc/theory.md §2) turns the
-    // constraint into a penalty-like term that is exact at its fixed point:
+    // (x_s - p).m the initial gap, p a point of the plane). The modified
+    // Lagrangian (doc/theory.md §2) turns the constraint into a penalty-like
+    // term that is exact at its fixed point:
     //
     //   M(v; l1) = J(v) + sum_s m_s/(2r) [ ((l1_s + r (v_n(x_s) - g0_s))^+)^2
     //                                      - l1_s^2 ].

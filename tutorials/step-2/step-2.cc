@@ -227,9 +227,10 @@ namespace Step2
   // step alpha = 1 if it decreases M_k enough (phi(1) - phi(0) <= 1e-4
   // phi'(0), Armijo's sufficient-decrease test: near the solution Newton's
   // step is right and needs no search), whether or not 1 is the minimiser;
-  // only if that fails, the minimiser: the breakpoints of all ranks, sorted; the first breakpoint where phi' >= 0,
-  // found by bisection over the list (one reduction per evaluation); and on
-  // the piece to its left, where phi' is linear, its root
+  // only if that fails, the minimiser: the breakpoints of all ranks, sorted;
+  // the first breakpoint where phi' >= 0, found by bisection over the list (one
+  // reduction per evaluation); and on the piece to its left, where phi' is
+  // linear, its root
   //   alpha = alpha_lo - phi'(alpha_lo) / phi''
   // with phi'' = q2 + r sum_{active on the piece} m_s dn_s^2, evaluated in the
   // middle of the piece, where no node is at its breakpoint.
