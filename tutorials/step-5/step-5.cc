@@ -227,15 +227,17 @@ namespace Step5
       {
         // Marking and refinement: the strategy's indicator ranks the cells.
         // With nested iteration refine_mesh() hands u_h and the nodal
-        // fields l1, l2, g to a SolutionTransfer before the cells split.
+        // fields l1, l2 and the friction threshold to a SolutionTransfer
+        // before the cells split.
         if (cycle > 0)
           problem.refine_mesh();
 
         // The new DoFs and constraints; then the transfer (doc/theory.md
-        // §7): v interpolated (exact, the spaces are nested), l1, l2, g
-        // interpolated as nodal fields, read at the new contact nodes and
-        // projected onto the admissible set, l1 <- max(l1, 0),
-        // g <- max(g, 0), l2 <- proj_g(l2).
+        // §7): v interpolated (exact, the spaces are nested), l1, l2, the
+        // threshold interpolated as nodal fields, read at the new contact
+        // nodes and projected onto the admissible set, l1 <- max(l1, 0),
+        // threshold <- max(threshold, 0), l2 <- its projection onto
+        // [-threshold, threshold].
         CycleResult result;
         result.mesh     = problem.setup_system(cycle);
         result.transfer = problem.transfer_fields();

@@ -1,8 +1,9 @@
 /* step-7: a ball under normal and tangential load.
  *
- * Steps 1-5 were 2D, where the friction traction is a number between -g and
- * g. In 3D it is a vector in the tangent plane, bounded by a disc of radius
- * g: the contact can slip in any direction, and where it does the traction
+ * Steps 1-5 were 2D, where the friction traction is a number between
+ * -theta and theta, theta the friction threshold (g in doc/theory.md). In
+ * 3D it is a vector in the tangent plane, bounded by a disc of radius
+ * theta: the contact can slip in any direction, and where it does the traction
  * points against the slip. This step first shows that disc, the one
  * function the 3D friction law adds (project_onto_disc), then solves the
  * classic 3D partial-slip problem: an elastic ball pressed onto a rough
@@ -51,36 +52,37 @@ namespace Step7
   // @sect3{The friction disc}
   //
   // Each Uzawa step updates the friction multiplier of a contact node as
-  //   l2 <- proj_g(l2 + r v_t),
+  //   l2 <- proj_theta(l2 + r v_t),
   // the trial traction l2 + r v_t (the old traction plus the augmentation
   // parameter times the tangential displacement) projected onto the disc
-  // |l2| <= g, g = F l1 the threshold. Inside the disc nothing changes: the
-  // node sticks. Outside, the trial traction is scaled back to the circle,
-  // keeping its direction: the node slips, with the traction of magnitude g
-  // along the trial one. In 2D the disc is the interval [-g, g], and this
-  // is a clamp; in 3D it is the only new piece of the friction law. The
-  // table shows it on four trial tractions, with g = 1.
+  // |l2| <= theta, theta = F l1 the threshold. Inside the disc nothing
+  // changes: the node sticks. Outside, the trial traction is scaled back to
+  // the circle, keeping its direction: the node slips, with the traction of
+  // magnitude theta along the trial one. In 2D the disc is the interval
+  // [-theta, theta], and this is a clamp; in 3D it is the only new piece of
+  // the friction law. The table shows it on four trial tractions, with
+  // theta = 1.
   void
   show_the_disc(ConditionalOStream &pcout)
   {
-    pcout << "The friction disc, g = 1: trial traction -> projection "
+    pcout << "The friction disc, theta = 1: trial traction -> projection "
              "(|l2|, what the node does)\n";
-    const double g        = 1.;
+    const double theta    = 1.;
     const double trials[] = {0.3, 0.4, -0.5, 0.6, 1.2, -0.5, 3., 4.};
     for (unsigned int i = 0; i < 8; i += 2)
       {
         const Tensor<1, 2> y({trials[i], trials[i + 1]});
-        const Tensor<1, 2> p = project_onto_disc(y, g);
+        const Tensor<1, 2> p = project_onto_disc(y, theta);
         pcout << "  (" << format("%+.2f", y[0]) << ", " << format("%+.2f", y[1])
               << ") -> (" << format("%+.3f", p[0]) << ", "
               << format("%+.3f", p[1])
               << ")  |l2| = " << format("%.3f", p.norm())
-              << (y.norm() < g ? "  sticks" : "  slips") << "\n";
+              << (y.norm() < theta ? "  sticks" : "  slips") << "\n";
       }
-    // the same in 2D: a clamp to [-g, g]
+    // the same in 2D: a clamp to [-theta, theta]
     const Tensor<1, 1> y2({-2.5});
     pcout << "  2D: " << format("%+.2f", y2[0]) << " -> "
-          << format("%+.3f", project_onto_disc(y2, g)[0]) << "\n\n";
+          << format("%+.3f", project_onto_disc(y2, theta)[0]) << "\n\n";
   }
 
   // @sect3{The exact solutions}
@@ -133,8 +135,9 @@ namespace Step7
   //
   // One row per contact node (all ranks' nodes, written by rank 0): its
   // position, weight m_s, the pressure l1, the friction traction l2 as a
-  // vector (l2_x, l2_y, l2_z), the threshold g and the status (separated,
-  // stick, slip). Read by column name, the way a user's script would.
+  // vector (l2_x, l2_y, l2_z), the threshold theta (the column g, row.g
+  // below) and the status (separated, stick, slip). Read by column name,
+  // the way a user's script would.
   struct ContactRow
   {
     double      x, y, weight, l1, l2_x, l2_y, g;
@@ -160,19 +163,19 @@ namespace Step7
 
   // @sect3{The zone against Hertz and Cattaneo-Mindlin}
   //
-  // Over all contact nodes: the friction law (|l2| <= g everywhere, |l2| = g
-  // where the node slips), and the relative L2 errors, with the weights
-  // m_s, of the pressure against p(r) and of the traction along the load
-  // against q(r). Along the x axis (y = 0): the nodes, for the profile plot
-  // (profile.csv), and the contact element at r = c, the spacing of the
+  // Over all contact nodes: the friction law (|l2| <= theta everywhere,
+  // |l2| = theta where the node slips), and the relative L2 errors, with the
+  // weights m_s, of the pressure against p(r) and of the traction along the
+  // load against q(r). Along the x axis (y = 0): the nodes, for the profile
+  // plot (profile.csv), and the contact element at r = c, the spacing of the
   // nodes there. zones.csv holds every node in contact with its status, for
   // the map of the stick and slip zones.
   struct ZoneFigures
   {
-    double       excess     = 0.; // max (|l2| - g), relative to max g
-    double       slip_short = 0.; // max (g - |l2|) over slipping nodes, same
-    double       pressure_error = 0., traction_error = 0.;
-    double       element_at_c = 0.;
+    double excess         = 0.; // max (|l2| - theta), relative to max theta
+    double slip_short     = 0.; // max (theta - |l2|) over slipping nodes, same
+    double pressure_error = 0., traction_error = 0.;
+    double element_at_c  = 0.;
     unsigned int n_stick = 0, n_slip = 0;
   };
 
@@ -306,9 +309,10 @@ namespace Step7
       compare_zone(read_contact_csv(directory + name), exact, directory, root);
     pcout << "\nThe nodes of the last cycle (contact" << (name + 8)
           << "): " << zone.n_stick << " stick, " << zone.n_slip << " slip\n"
-          << "  friction law: max (|l2| - g) = " << format("%.1e", zone.excess)
-          << " g_max, slipping nodes max (g - |l2|) = "
-          << format("%.1e", zone.slip_short) << " g_max\n"
+          << "  friction law: max (|l2| - theta) = "
+          << format("%.1e", zone.excess)
+          << " theta_max, slipping nodes max (theta - |l2|) = "
+          << format("%.1e", zone.slip_short) << " theta_max\n"
           << "  relative L2 errors: pressure against Hertz "
           << format("%.2e", zone.pressure_error)
           << ", traction along x against Cattaneo-Mindlin "
@@ -326,8 +330,8 @@ namespace Step7
     // 1. The disc: no node outside it, every slipping node on its circle.
     checks(zone.excess <= 1e-9 && zone.slip_short <= 1e-9 && zone.n_slip > 0 &&
              zone.n_stick > 0,
-           "the friction disc: |l2| <= g at every node, |l2| = g where it "
-           "slips (to 1e-9 g_max)");
+           "the friction disc: |l2| <= theta at every node, |l2| = theta "
+           "where it slips (to 1e-9 theta_max)");
 
     // 2. Equilibrium: the plane's force on the ball balances the clamp's.
     Tensor<1, 3> balance;

@@ -285,15 +285,15 @@ namespace Step8
     const std::vector<Prediction> predicted =
       mindlin_deresiewicz(cycle, scene, clamp, F);
 
-    // The variants end where the cycle's first shear has Q/(F P) nearest
-    // 1/2: at that step's time t_v.
+    // The variants end where the cycle's first shear has |Q|/(F P) nearest
+    // 1/2: at that step's time t_v (|Q|: the shear may go toward -x).
     unsigned int variant_step = 0;
     for (unsigned int n = 0; n <= turns[0]; ++n)
       {
         const CycleResult &r = cycle.steps[n];
         const CycleResult &v = cycle.steps[variant_step];
-        if (std::abs(Q_of(r, clamp) / (F * P_of(r)) - 0.5) <
-            std::abs(Q_of(v, clamp) / (F * P_of(v)) - 0.5))
+        if (std::abs(std::abs(Q_of(r, clamp)) / (F * P_of(r)) - 0.5) <
+            std::abs(std::abs(Q_of(v, clamp)) / (F * P_of(v)) - 0.5))
           variant_step = n;
       }
     const double t_v = cycle.steps[variant_step].step.time;
