@@ -10,6 +10,8 @@
 #                (the script stops with status 2 if it is not executable)
 #   bin_shown    the program as the pages in doc/ show it (repo_path)
 # and defines
+#   last_value F C  the value of column C in the last row of the CSV file F
+#                ('' if the column is absent)
 #   repo_path P  P as seen from the repository root: '.', a path below it,
 #                or '<name outside the repository>' for anything else, so
 #                that no page shows an absolute path of the machine that
@@ -35,3 +37,9 @@ repo_path() {
   esac
 }
 bin_shown="$(repo_path "$bin")"
+
+# The value of column $2 in the last row of the CSV file $1 ('' if absent).
+last_value() {
+  awk -F, -v name="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i; next }
+    { v = (c ? $c : "") } END { print v }' "$1"
+}

@@ -49,12 +49,6 @@ work="$(mktemp -d)"
 trap 'rm -rf -- "$work"' EXIT
 out="$repo/doc/benchmarks/degree_sweep.md"
 
-# The value of column $2 in the last row of the CSV file $1 ('' if absent).
-last_value() {
-  awk -F, -v name="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i; next }
-    { v = (c ? $c : "") } END { print v }' "$1"
-}
-
 # the rows of every run, kept beside the page: a sweep of some scenes or
 # degrees (SCENES, DEGREES) replaces their rows and keeps the others'
 rows="$repo/doc/benchmarks/degree_sweep.rows"

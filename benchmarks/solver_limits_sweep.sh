@@ -44,12 +44,6 @@ work="$(mktemp -d)"
 trap 'rm -rf -- "$work"' EXIT
 out="$doc/benchmarks/solver_limits_sweep.md"
 
-# The value of column $2 in the last row of the CSV file $1 ('' if absent).
-last_value() {
-  awk -F, -v name="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i; next }
-    { v = (c ? $c : "") } END { print v }' "$1"
-}
-
 rows="$work/rows"
 : > "$rows"
 IFS=';' read -r -a setting_list <<< "$settings"
