@@ -333,12 +333,19 @@ namespace Step7
            "the friction disc: |l2| <= theta at every node, |l2| = theta "
            "where it slips (to 1e-9 theta_max)");
 
-    // 2. Equilibrium: the plane's force on the ball balances the clamp's.
+    // 2. Equilibrium: the plane's force on the ball balances the clamp's
+    // reaction, or the loads where a traction replaces the clamp
+    // (README.md, "Loads instead of a clamp").
+    const auto   clamp = last.reactions.on_id.find(1);
     Tensor<1, 3> balance;
     for (unsigned int d = 0; d < 3; ++d)
-      balance[d] = last.reactions.on_id.at(1)[d] + last.zone.resultant[d];
+      balance[d] =
+        (clamp != last.reactions.on_id.end() ? clamp->second[d] :
+                                               last.reactions.applied_load[d]) +
+        last.zone.resultant[d];
     checks(balance.norm() <= 1e-8 * P,
-           "the force on the plane equals the clamp's reaction (1e-8 P)");
+           "the force on the plane equals the clamp's reaction or the "
+           "loads (1e-8 P)");
 
     // 3. Hertz: the contact radius within one contact element.
     checks(std::abs(last.zone.edge_half_width - exact.a) <= zone.element_at_c,
