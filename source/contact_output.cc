@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
+#include <numeric>
 
 namespace dualcontact
 {
@@ -229,10 +230,18 @@ namespace dualcontact
     // times in each direction for FE_Q(k): its points are the face's
     // support points in lexicographic order, where the mapping puts them
     // (on the curve of a curved face).
-    const FiniteElement<dim>       &fe = dof_handler.get_fe();
-    const unsigned int              k  = fe.degree;
-    const std::vector<unsigned int> lexicographic =
-      FETools::hierarchic_to_lexicographic_numbering<dim - 1>(k);
+    // A triangle face (of a tetrahedron, P1 only) is one patch of its 3
+    // vertices, in the face's order.
+    const FiniteElement<dim> &fe  = dof_handler.get_fe();
+    const ReferenceCell face_cell = fe.reference_cell().face_reference_cell(0);
+    const bool          triangles = !face_cell.is_hyper_cube();
+    const unsigned int  k         = triangles ? 1 : fe.degree;
+    std::vector<unsigned int> lexicographic(face_cell.n_vertices());
+    if (triangles)
+      std::iota(lexicographic.begin(), lexicographic.end(), 0u);
+    else
+      lexicographic =
+        FETools::hierarchic_to_lexicographic_numbering<dim - 1>(k);
     std::map<types::global_dof_index, Point<dim>> where;
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, where);
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
@@ -245,7 +254,7 @@ namespace dualcontact
             {
               const auto                       face = cell->face(f);
               DataOutBase::Patch<dim - 1, dim> patch;
-              patch.reference_cell = ReferenceCells::get_hypercube<dim - 1>();
+              patch.reference_cell = face_cell;
               patch.n_subdivisions = k;
               patch.patch_index    = patches.size();
               for (const unsigned int v : face->vertex_indices())

@@ -7,8 +7,6 @@
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 
-#include <deal.II/fe/fe_q.h>
-
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -49,7 +47,9 @@ namespace dualcontact
       // checked against the memory before it is built, as in make_grid()
       , scene(parameters,
               [this](const double n_cells) {
-                RunSizeCheck(parameters, this->mpi_communicator)
+                RunSizeCheck(parameters,
+                             this->mpi_communicator,
+                             parameters.geometry.cell_kind)
                   .check(n_cells, false);
               })
       , step_times(parameters.load_path.step_times())
@@ -58,14 +58,15 @@ namespace dualcontact
                         TimerOutput::never,
                         TimerOutput::wall_times)
       , report(parameters, scene, computing_timer, mpi_communicator, out)
-      // Mesh smoothing: only the 2:1 balance at vertices, which p4est
-      // enforces on the whole forest. deal.II's other smoothing flags act
-      // on the refinement flags each rank sees, so they would make the
-      // adaptive meshes depend on the number of ranks.
-      , triangulation(mpi_communicator,
-                      Triangulation<dim>::limit_level_difference_at_vertices)
-      , mapping(parameters.discretization.degree)
-      , fe(FE_Q<dim>(parameters.discretization.degree), dim)
+      , triangulation_ptr(
+          make_triangulation<dim>(scene.cell_kind(), mpi_communicator))
+      , mapping_ptr(make_mapping<dim>(scene.cell_kind(),
+                                      parameters.discretization.degree))
+      , fe_ptr(make_element<dim>(scene.cell_kind(),
+                                 parameters.discretization.degree))
+      , triangulation(*triangulation_ptr)
+      , mapping(*mapping_ptr)
+      , fe(*fe_ptr)
       , dof_handler(triangulation)
       , elastic_solver(parameters.solver, parameters.material.poissons_ratio)
       , newton(parameters.solver, elastic_solver)
@@ -277,7 +278,7 @@ namespace dualcontact
     // constructor), before each refinement that builds the initial mesh,
     // and once it is built: a scene refined far too often, or a box of far
     // too many cells, stops at once, not with std::bad_alloc after minutes.
-    const RunSizeCheck size(parameters, mpi_communicator);
+    const RunSizeCheck size(parameters, mpi_communicator, scene.cell_kind());
     scene.create_mesh(triangulation, [&size](const double n_cells) {
       size.check(n_cells, false);
     });
@@ -717,10 +718,13 @@ namespace dualcontact
   {
     TimerOutput::Scope          t(computing_timer, "refine mesh");
     const RefinementParameters &refinement = parameters.refinement;
+    const bool simplex = scene.cell_kind() == CellKind::simplex;
     if (refinement_indicator_kind(refinement.strategy).refines_every_cell())
       {
+        // (a replicated mesh of simplices refines the cells that every
+        // rank flags alike: all of them are flagged)
         for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
+          if (cell->is_locally_owned() || simplex)
             cell->set_refine_flag();
       }
     else // the same cells on any number of ranks
@@ -742,11 +746,9 @@ namespace dualcontact
             fields.push_back(&multipliers);
             fields.push_back(&threshold);
           }
-        transfer = std::make_unique<parallel::distributed::SolutionTransfer<
-          dim,
-          TrilinosWrappers::MPI::Vector>>(dof_handler);
+        transfer = std::make_unique<FieldTransfer<dim>>(dof_handler);
         triangulation.prepare_coarsening_and_refinement();
-        transfer->prepare_for_coarsening_and_refinement(fields);
+        transfer->prepare(fields);
       }
     triangulation.execute_coarsening_and_refinement();
   }

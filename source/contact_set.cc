@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <dualcontact/contact_set.h>
+#include <dualcontact/discretization.h>
 #include <dualcontact/input_error.h>
 
 #include <cmath>
@@ -35,50 +36,56 @@ namespace dualcontact
     // The body's outward normal at a node, the mean int_{Gamma_C} phi_s nu
     // of the faces' normals, is assembled alike, component c of it on the
     // node's DoF of component c.
-    TrilinosWrappers::MPI::Vector        weights(owned, comm);
-    TrilinosWrappers::MPI::Vector        body_normals(owned, comm);
-    const QGauss<dim - 1>                quadrature(fe.degree + 1);
-    FEFaceValues<dim>                    fe_face(mapping,
+    TrilinosWrappers::MPI::Vector weights(owned, comm);
+    TrilinosWrappers::MPI::Vector body_normals(owned, comm);
+    const Quadrature<dim - 1> quadrature = face_quadrature(fe, fe.degree + 1);
+    FEFaceValues<dim>         fe_face(mapping,
                               fe,
                               quadrature,
                               update_values | update_normal_vectors |
                                 update_JxW_values);
-    Vector<double>                       local_weights(fe.n_dofs_per_cell());
-    Vector<double>                       local_normals(fe.n_dofs_per_cell());
+    Vector<double>            local_weights(fe.n_dofs_per_cell());
+    Vector<double>            local_normals(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
 
     // Candidate nodes: cell-local support points on contact faces, grouped
-    // by their scalar shape function (the "base" index).
+    // by their scalar shape function (the "base" index), from the owned
+    // and the ghost cells: a node this rank owns may lie on contact faces
+    // of other ranks' cells only (a vertex of a triangle fan whose owned
+    // triangle touches Gamma_C at that vertex alone). Weights and normals
+    // come from the owned cells, summed over the ranks.
     std::map<types::global_dof_index, ContactNode<dim>> candidates;
     double h_min = std::numeric_limits<double>::max();
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() || cell->is_ghost())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
               contact_ids.count(cell->face(f)->boundary_id()))
             {
-              h_min = std::min(h_min, cell->face(f)->diameter());
               cell->get_dof_indices(dof_indices);
-              fe_face.reinit(cell, f);
-              local_weights = 0;
-              local_normals = 0;
-              for (const unsigned int q : fe_face.quadrature_point_indices())
-                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                  {
-                    const double phi_dx =
-                      fe_face.shape_value(i, q) * fe_face.JxW(q);
-                    local_weights(i) += phi_dx;
-                    local_normals(i) +=
-                      phi_dx * fe_face.normal_vector(
-                                 q)[fe.system_to_component_index(i).first];
-                  }
-              hanging_node_constraints.distribute_local_to_global(local_weights,
-                                                                  dof_indices,
-                                                                  weights);
-              hanging_node_constraints.distribute_local_to_global(local_normals,
-                                                                  dof_indices,
-                                                                  body_normals);
+              if (cell->is_locally_owned())
+                {
+                  h_min = std::min(h_min, cell->face(f)->diameter());
+                  fe_face.reinit(cell, f);
+                  local_weights = 0;
+                  local_normals = 0;
+                  for (const unsigned int q :
+                       fe_face.quadrature_point_indices())
+                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                      {
+                        const double phi_dx =
+                          fe_face.shape_value(i, q) * fe_face.JxW(q);
+                        local_weights(i) += phi_dx;
+                        local_normals(i) +=
+                          phi_dx * fe_face.normal_vector(
+                                     q)[fe.system_to_component_index(i).first];
+                      }
+                  hanging_node_constraints.distribute_local_to_global(
+                    local_weights, dof_indices, weights);
+                  hanging_node_constraints.distribute_local_to_global(
+                    local_normals, dof_indices, body_normals);
+                }
 
               std::map<unsigned int, ContactNode<dim>> on_face;
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)

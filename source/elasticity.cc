@@ -8,6 +8,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/elasticity.h>
 #include <dualcontact/input_error.h>
 
@@ -24,8 +25,10 @@ namespace dualcontact
     /**
      * The cell terms of linear elasticity: the stiffness of a(u, v) =
      * int sigma(u):eps(v), the load int f.v + int_{Gamma_N} T.v (only the
-     * loads the scene has) and, if asked, the lumped mass int phi_i (the
-     * row sums of the mass matrix int u.v).
+     * loads the scene has) and, if asked, the lumped mass: int phi_i, the
+     * row sums of the mass matrix int u.v, on quadrilaterals; on simplices
+     * the diagonal int phi_i^2 scaled to the cell's measure per component
+     * (lumped_mass.h).
      */
     template <int dim>
     class CellAssembler
@@ -38,8 +41,9 @@ namespace dualcontact
           , scene(scene)
           , lambda(scene.parameters.material.lambda())
           , mu(scene.parameters.material.mu())
-          , quadrature(fe.degree + 1)
-          , face_quadrature(fe.degree + 1)
+          , simplex(!fe.reference_cell().is_hyper_cube())
+          , quadrature(cell_quadrature(fe, fe.degree + 1))
+          , face_quadrature(dualcontact::face_quadrature(fe, fe.degree + 1))
           , fe_values(mapping,
                       fe,
                       quadrature,
@@ -52,6 +56,7 @@ namespace dualcontact
                              update_JxW_values)
           , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
           , mass(fe.n_dofs_per_cell())
+          , squares(fe.n_dofs_per_cell())
           , rhs(fe.n_dofs_per_cell())
           , eps(fe.n_dofs_per_cell())
           , div(fe.n_dofs_per_cell())
@@ -77,9 +82,11 @@ namespace dualcontact
         const FEValuesExtractors::Vector displacement(0);
         const Function<dim>             *body_force = scene.body_force();
         fe_values.reinit(cell);
-        matrix = 0;
-        mass   = 0;
-        rhs    = 0;
+        matrix         = 0;
+        mass           = 0;
+        squares        = 0;
+        rhs            = 0;
+        double measure = 0.;
         if (body_force != nullptr)
           body_force->vector_value_list(fe_values.get_quadrature_points(),
                                         load_values);
@@ -91,6 +98,7 @@ namespace dualcontact
                 div[i] = trace(eps[i]);
               }
             const double JxW = fe_values.JxW(q);
+            measure += JxW;
             // sigma(u):eps(v) = lambda div u div v + 2 mu eps(u):eps(v)
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
@@ -101,7 +109,11 @@ namespace dualcontact
                 // the row sum of int u.v: the shape functions of a
                 // component sum to one
                 if (with_mass)
-                  mass(i) += fe_values.shape_value(i, q) * JxW;
+                  {
+                    const double phi = fe_values.shape_value(i, q);
+                    mass(i) += phi * JxW;
+                    squares(i) += phi * phi * JxW;
+                  }
                 if (body_force != nullptr)
                   rhs(i) +=
                     load_values[q](fe.system_to_component_index(i).first) *
@@ -111,6 +123,18 @@ namespace dualcontact
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = i + 1; j < n_dofs; ++j)
             matrix(i, j) = matrix(j, i);
+        // P2's vertex functions on a triangle integrate to zero: the
+        // diagonal, scaled so that each component's entries sum to the
+        // cell's measure, is positive (and equals the row sums for P1)
+        if (with_mass && simplex)
+          {
+            double sum = 0.;
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              if (fe.system_to_component_index(i).first == 0)
+                sum += squares(i);
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              mass(i) = squares(i) * measure / sum;
+          }
 
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() && traction_ids.count(face->boundary_id()))
@@ -133,12 +157,13 @@ namespace dualcontact
       const FiniteElement<dim> &fe;
       const Scene<dim>         &scene;
       const double              lambda, mu;
-      const QGauss<dim>         quadrature;
-      const QGauss<dim - 1>     face_quadrature;
+      const bool                simplex;
+      const Quadrature<dim>     quadrature;
+      const Quadrature<dim - 1> face_quadrature;
       FEValues<dim>             fe_values;
       FEFaceValues<dim>         fe_face_values;
       FullMatrix<double>        matrix;
-      Vector<double>            mass, rhs;
+      Vector<double>            mass, squares, rhs;
 
     private:
       std::vector<SymmetricTensor<2, dim>> eps;

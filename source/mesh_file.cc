@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/gmsh_scan.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/mesh_file.h>
@@ -56,8 +57,9 @@ namespace dualcontact
                              plural(count, "element") + " of Gmsh type " +
                              std::to_string(type) +
                              " (second order, or another kind): dualcontact "
-                             "needs first-order quadrilaterals (2D) or "
-                             "hexahedra (3D); set 'Mesh.ElementOrder = 1;'.",
+                             "needs first-order quadrilaterals or triangles "
+                             "(2D), hexahedra or tetrahedra (3D); set "
+                             "'Mesh.ElementOrder = 1;'.",
                            exit_invalid_value);
 
       const unsigned long n_3d_cells =
@@ -77,37 +79,56 @@ namespace dualcontact
                            "Dimension> is 3.",
                          exit_inconsistent);
 
-      if (dim == 2 && n(MshContents::triangle) > 0)
-        throw InputError(
-          "The mesh " + file + " has " +
-            plural(n(MshContents::triangle), "triangle") +
-            ": dualcontact needs quadrilaterals only (p4est). Recombine them "
-            "in Gmsh: add 'Recombine Surface{:};' (or 'Mesh.RecombineAll = "
-            "1;') to the .geo file, with 'Mesh.Algorithm = 8;' for a mesh "
-            "of quadrilaterals only, or 'Mesh.SubdivisionAlgorithm = 1;' to "
-            "split every triangle into quadrilaterals (doc/meshes.md).",
-          exit_invalid_value);
-      std::string not_hex;
-      for (const auto &[type, name] : std::vector<std::pair<int, std::string>>{
-             {MshContents::tetrahedron, "tetrahedra"},
-             {MshContents::prism, "prisms"},
-             {MshContents::pyramid, "pyramids"},
-             {MshContents::triangle, "triangles"}})
-        if (n(type) > 0)
-          not_hex += (not_hex.empty() ? "" : ", ") + std::to_string(n(type)) +
+      // One kind of cell: quadrilaterals or triangles in 2D, hexahedra or
+      // tetrahedra in 3D (a mesh of triangles or tetrahedra is read as
+      // simplices, doc/simplices.md).
+      const int quads = dim == 2 ? MshContents::quad : MshContents::hexahedron;
+      const int simplex =
+        dim == 2 ? MshContents::triangle : MshContents::tetrahedron;
+      const std::string quad_name = dim == 2 ? "quadrilaterals" : "hexahedra";
+      const std::string simplex_name = dim == 2 ? "triangles" : "tetrahedra";
+      std::string       other;
+      if (dim == 3)
+        for (const auto &[type, name] :
+             std::vector<std::pair<int, std::string>>{
+               {MshContents::prism, "prisms"},
+               {MshContents::pyramid, "pyramids"}})
+          if (n(type) > 0)
+            other += (other.empty() ? "" : ", ") + std::to_string(n(type)) +
                      " " + name;
-      if (dim == 3 && !not_hex.empty())
+      if (!other.empty())
         throw InputError(
-          "The mesh " + file + " has " + not_hex +
-            ": dualcontact needs hexahedra only (p4est). In Gmsh, extrude a "
-            "recombined surface mesh ('Recombine Surface{:};', then 'Extrude "
-            "{...} { Surface{...}; Layers{n}; Recombine; }'), or add "
-            "'Mesh.SubdivisionAlgorithm = 2;' to split every tetrahedron "
-            "into hexahedra (doc/meshes.md).",
+          "The mesh " + file + " has " + other +
+            ": dualcontact takes hexahedra or tetrahedra only. In Gmsh, mesh "
+            "the volume with tetrahedra alone, or extrude a recombined "
+            "surface mesh ('Recombine Surface{:};', then 'Extrude {...} { "
+            "Surface{...}; Layers{n}; Recombine; }') for hexahedra "
+            "(doc/meshes.md).",
           exit_invalid_value);
-      if ((dim == 2 ? n(MshContents::quad) : n(MshContents::hexahedron)) == 0)
-        throw InputError("The mesh " + file + " has no " +
-                           (dim == 2 ? "quadrilaterals" : "hexahedra") +
+      // "1 hexahedron", "2 hexahedra"
+      const auto count =
+        [&n](const int type, const std::string &one, const std::string &many) {
+          return std::to_string(n(type)) + " " + (n(type) == 1 ? one : many);
+        };
+      if (n(quads) > 0 && n(simplex) > 0)
+        throw InputError(
+          "The mesh " + file + " mixes " +
+            count(quads, dim == 2 ? "quadrilateral" : "hexahedron", quad_name) +
+            " with " +
+            count(simplex,
+                  dim == 2 ? "triangle" : "tetrahedron",
+                  simplex_name) +
+            ": dualcontact takes one kind of cell. Recombine "
+            "every surface in Gmsh ('Recombine Surface{:};' with "
+            "'Mesh.Algorithm = 8;') for " +
+            quad_name +
+            ", or mesh without "
+            "'Recombine' for " +
+            simplex_name + " (doc/meshes.md).",
+          exit_invalid_value);
+      if (n(quads) + n(simplex) == 0)
+        throw InputError("The mesh " + file + " has no " + quad_name +
+                           " and no " + simplex_name +
                            ": Gmsh writes only the elements of physical "
                            "groups; give the domain one ('Physical " +
                            (dim == 2 ? "Surface" : "Volume") +
@@ -129,10 +150,13 @@ namespace dualcontact
       return out.str();
     }
 
-    /** Distance of x from the manifold's circle, sphere or cylinder axis. */
+    /**
+     * The radial part of x: from the centre of the manifold's circle or
+     * sphere, from the cylinder's axis normal to it.
+     */
     template <int dim>
-    double
-    radial_distance(const BoundaryManifold &manifold, const Point<dim> &x)
+    Tensor<1, dim>
+    radial_vector(const BoundaryManifold &manifold, const Point<dim> &x)
     {
       Tensor<1, dim> r = x - to_point<dim>(manifold.center);
       if (manifold.kind == BoundaryManifold::Kind::cylinder)
@@ -143,7 +167,15 @@ namespace dualcontact
           axis /= axis.norm();
           r -= (r * axis) * axis;
         }
-      return r.norm();
+      return r;
+    }
+
+    /** Distance of x from the manifold's circle, sphere or cylinder axis. */
+    template <int dim>
+    double
+    radial_distance(const BoundaryManifold &manifold, const Point<dim> &x)
+    {
+      return radial_vector(manifold, x).norm();
     }
 
     // the manifold id of the transfinite interpolation in the cells: above
@@ -175,8 +207,11 @@ namespace dualcontact
     const MshContents contents = scan_msh(text, name_of(geometry));
     check_elements<dim>(contents, geometry);
     if (before_building)
-      before_building(static_cast<double>(contents.count(
-        dim == 2 ? MshContents::quad : MshContents::hexahedron)));
+      before_building(static_cast<double>(
+        dim == 2 ? contents.count(MshContents::quad) +
+                     contents.count(MshContents::triangle) :
+                   contents.count(MshContents::hexahedron) +
+                     contents.count(MshContents::tetrahedron)));
 
     text.clear();
     text.seekg(0);
@@ -219,7 +254,9 @@ namespace dualcontact
       if (face->at_boundary())
         ++n_boundary_faces;
     const unsigned long n_boundary_elements =
-      contents.count(dim == 2 ? MshContents::line : MshContents::quad);
+      dim == 2 ? contents.count(MshContents::line) :
+                 contents.count(MshContents::quad) +
+                   contents.count(MshContents::triangle);
     if (n_boundary_elements < n_boundary_faces)
       throw InputError("The mesh " + file + " has " +
                          plural(n_boundary_faces - n_boundary_elements,
@@ -313,6 +350,10 @@ namespace dualcontact
   {
     if (geometry.manifolds.empty())
       return;
+    // On simplices only the curved boundary faces follow their manifold:
+    // deal.II 9.4's transfinite interpolation takes quadrilaterals and
+    // hexahedra alone, so the cells stay flat.
+    const bool simplex = cell_kind(triangulation) == CellKind::simplex;
     // The cells next to a curved boundary part follow the transfinite
     // interpolation of their boundary, so that their refined cells stay
     // well shaped; the other cells, the faces they share with those, and
@@ -331,7 +372,7 @@ namespace dualcontact
     };
     triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
     for (const auto &cell : triangulation.active_cell_iterators())
-      if (next_to_curved(cell))
+      if (!simplex && next_to_curved(cell))
         cell->set_all_manifold_ids(interior_manifold_id);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (!next_to_curved(cell))
@@ -363,9 +404,30 @@ namespace dualcontact
           triangulation.set_manifold(manifold.id,
                                      SphericalManifold<dim>(center));
       }
+    if (simplex)
+      return;
     TransfiniteInterpolationManifold<dim> interior;
     interior.initialize(triangulation);
     triangulation.set_manifold(interior_manifold_id, interior);
+  }
+
+  template <int dim>
+  void
+  snap_to_manifolds(const std::vector<BoundaryManifold> &manifolds,
+                    Triangulation<dim>                  &triangulation)
+  {
+    for (const BoundaryManifold &manifold : manifolds)
+      for (const auto &face : triangulation.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == manifold.id)
+          for (const unsigned int v : face->vertex_indices())
+            {
+              // along the radius, away from the centre or the axis
+              Point<dim>          &x        = face->vertex(v);
+              const Tensor<1, dim> r        = radial_vector(manifold, x);
+              const double         distance = r.norm();
+              if (distance > 0.)
+                x += (manifold.radius / distance - 1.) * r;
+            }
   }
 
   template void
@@ -384,6 +446,10 @@ namespace dualcontact
   check_mesh_against_parameters(const Parameters &, const Triangulation<2> &);
   template void
   check_mesh_against_parameters(const Parameters &, const Triangulation<3> &);
+  template void
+  snap_to_manifolds(const std::vector<BoundaryManifold> &, Triangulation<2> &);
+  template void
+  snap_to_manifolds(const std::vector<BoundaryManifold> &, Triangulation<3> &);
   template void
   attach_manifolds(const GeometryParameters &, Triangulation<2> &);
   template void

@@ -324,6 +324,9 @@ namespace dualcontact
     load_path.check(*this);
     // last: without contact, a friction law is the more direct cause
     geometry.check_pre_refinement(*this);
+    if (geometry.cell_kind == CellKind::simplex)
+      GeometryParameters::check_simplices(*this,
+                                          "<Geometry/Cell type> is 'simplex'");
   }
 
   EntryValues

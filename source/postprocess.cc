@@ -8,6 +8,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/postprocess.h>
 
 #include <iterator>
@@ -76,9 +77,10 @@ namespace dualcontact
                       const TrilinosWrappers::MPI::Vector &solution,
                       const Function<dim>                 *exact)
   {
-    const auto       &triangulation = dof_handler.get_triangulation();
-    const QGauss<dim> quadrature(dof_handler.get_fe().degree + 2);
-    Vector<double>    cellwise(triangulation.n_active_cells());
+    const auto           &triangulation = dof_handler.get_triangulation();
+    const Quadrature<dim> quadrature =
+      cell_quadrature(dof_handler.get_fe(), dof_handler.get_fe().degree + 2);
+    Vector<double>                     cellwise(triangulation.n_active_cells());
     const Functions::ZeroFunction<dim> zero(dim);
 
     const auto norm = [&](const Function<dim>        &reference,
@@ -108,8 +110,9 @@ namespace dualcontact
                          const std::set<types::boundary_id>  &contact_ids,
                          const Function<dim>                 &exact)
   {
-    const QGauss<dim - 1> quadrature(dof_handler.get_fe().degree + 3);
-    FEFaceValues<dim>     fe_face(mapping,
+    const Quadrature<dim - 1> quadrature =
+      face_quadrature(dof_handler.get_fe(), dof_handler.get_fe().degree + 3);
+    FEFaceValues<dim>                fe_face(mapping,
                               dof_handler.get_fe(),
                               quadrature,
                               update_values | update_quadrature_points |
@@ -146,8 +149,9 @@ namespace dualcontact
                               const TrilinosWrappers::MPI::Vector &solution,
                               const std::set<types::boundary_id>  &ids)
   {
-    const QGauss<dim - 1> quadrature(dof_handler.get_fe().degree + 1);
-    FEFaceValues<dim>     fe_face(mapping,
+    const Quadrature<dim - 1> quadrature =
+      face_quadrature(dof_handler.get_fe(), dof_handler.get_fe().degree + 1);
+    FEFaceValues<dim>                fe_face(mapping,
                               dof_handler.get_fe(),
                               quadrature,
                               update_values | update_JxW_values);

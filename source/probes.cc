@@ -77,12 +77,17 @@ namespace dualcontact
                    const typename Triangulation<dim>::cell_iterator &cell,
                    const unsigned int                                f)
     {
-      Point<dim> unit_centre;
-      for (unsigned int d = 0; d < dim; ++d)
-        unit_centre[d] = 0.5;
-      unit_centre[f / 2] = f % 2;
-      const Point<dim> on_mesh =
-        mapping.transform_unit_to_real_cell(cell, unit_centre);
+      // a simplex is straight-sided: its face's centre on the mesh is the
+      // mean of the face's vertices
+      Point<dim> on_mesh = cell->face(f)->center();
+      if (cell->reference_cell().is_hyper_cube())
+        {
+          Point<dim> unit_centre;
+          for (unsigned int d = 0; d < dim; ++d)
+            unit_centre[d] = 0.5;
+          unit_centre[f / 2] = f % 2;
+          on_mesh = mapping.transform_unit_to_real_cell(cell, unit_centre);
+        }
       return on_mesh.distance(cell->face(f)->center(true)) +
              1e-6 * cell->face(f)->diameter();
     }
@@ -127,17 +132,43 @@ namespace dualcontact
               {
                 const Point<dim> unit =
                   mapping.transform_real_to_unit_cell(cell, p);
-                const Point<dim> clamped =
-                  GeometryInfo<dim>::project_to_unit_cell(unit);
-                candidate = mapping.transform_unit_to_real_cell(cell, clamped);
-                // the boundary faces the clamping moved the point onto
-                for (unsigned int d = 0; d < dim; ++d)
-                  for (unsigned int side = 0; side < 2; ++side)
-                    if ((side == 0 ? unit[d] < 0. : unit[d] > 1.) &&
-                        cell->face(2 * d + side)->at_boundary())
-                      candidate_tolerance =
-                        std::max(candidate_tolerance,
-                                 face_tolerance(mapping, cell, 2 * d + side));
+                if (cell->reference_cell().is_hyper_cube())
+                  {
+                    const Point<dim> clamped =
+                      GeometryInfo<dim>::project_to_unit_cell(unit);
+                    candidate =
+                      mapping.transform_unit_to_real_cell(cell, clamped);
+                    // the boundary faces the clamping moved the point onto
+                    for (unsigned int d = 0; d < dim; ++d)
+                      for (unsigned int side = 0; side < 2; ++side)
+                        if ((side == 0 ? unit[d] < 0. : unit[d] > 1.) &&
+                            cell->face(2 * d + side)->at_boundary())
+                          candidate_tolerance = std::max(
+                            candidate_tolerance,
+                            face_tolerance(mapping, cell, 2 * d + side));
+                  }
+                else
+                  {
+                    // onto the reference simplex: no negative coordinate,
+                    // their sum at most 1; the tolerance of every boundary
+                    // face of the cell
+                    Point<dim> clamped;
+                    double     sum = 0.;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      {
+                        clamped[d] = std::max(unit[d], 0.);
+                        sum += clamped[d];
+                      }
+                    if (sum > 1.)
+                      clamped /= sum;
+                    candidate =
+                      mapping.transform_unit_to_real_cell(cell, clamped);
+                    for (const unsigned int f : cell->face_indices())
+                      if (cell->face(f)->at_boundary())
+                        candidate_tolerance =
+                          std::max(candidate_tolerance,
+                                   face_tolerance(mapping, cell, f));
+                  }
               }
             catch (const typename Mapping<dim>::ExcTransformationFailed &)
               {

@@ -5,6 +5,7 @@
 
 #include <deal.II/numerics/error_estimator.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/refinement.h>
 
 #include <algorithm>
@@ -84,7 +85,7 @@ namespace dualcontact
     KellyErrorEstimator<dim>::estimate(
       mapping,
       dof_handler,
-      QGauss<dim - 1>(dof_handler.get_fe().degree + 1),
+      face_quadrature(dof_handler.get_fe(), dof_handler.get_fe().degree + 1),
       std::map<types::boundary_id, const Function<dim> *>(),
       solution,
       indicator);
@@ -97,8 +98,9 @@ namespace dualcontact
                   const DoFHandler<dim>               &dof_handler,
                   const TrilinosWrappers::MPI::Vector &solution)
   {
-    const QGauss<dim> quadrature(dof_handler.get_fe().degree + 1);
-    FEValues<dim>     fe_values(mapping,
+    const Quadrature<dim> quadrature =
+      cell_quadrature(dof_handler.get_fe(), dof_handler.get_fe().degree + 1);
+    FEValues<dim>                    fe_values(mapping,
                             dof_handler.get_fe(),
                             quadrature,
                             update_gradients | update_JxW_values);
@@ -120,12 +122,12 @@ namespace dualcontact
 
   template <int dim>
   void
-  mark_fixed_number(parallel::distributed::Triangulation<dim> &triangulation,
-                    const Vector<float>                       &indicator,
-                    const double                               scale,
-                    const double                               refine_fraction,
-                    const double                               coarsen_fraction,
-                    const double                               tie_tolerance)
+  mark_fixed_number(Triangulation<dim>  &triangulation,
+                    const Vector<float> &indicator,
+                    const double         scale,
+                    const double         refine_fraction,
+                    const double         coarsen_fraction,
+                    const double         tie_tolerance)
   {
     const MPI_Comm comm = triangulation.get_communicator();
     std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
@@ -201,14 +203,14 @@ namespace dualcontact
                   const DoFHandler<3> &,
                   const TrilinosWrappers::MPI::Vector &);
   template void
-  mark_fixed_number(parallel::distributed::Triangulation<2> &,
+  mark_fixed_number(Triangulation<2> &,
                     const Vector<float> &,
                     const double,
                     const double,
                     const double,
                     const double);
   template void
-  mark_fixed_number(parallel::distributed::Triangulation<3> &,
+  mark_fixed_number(Triangulation<3> &,
                     const Vector<float> &,
                     const double,
                     const double,

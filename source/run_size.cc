@@ -30,7 +30,11 @@ namespace dualcontact
     constexpr double bytes_per_dof_2d = 1700.;
     constexpr double bytes_per_dof_3d = 7300.;
     constexpr double bytes_per_rank   = 180. * 1024. * 1024.;
-    constexpr double gigabyte         = 1024. * 1024. * 1024.;
+    // the replicated mesh of simplices (triangulation and DoF indices of
+    // every cell on every rank), per cell and rank
+    constexpr double bytes_per_replicated_cell_2d = 1000.;
+    constexpr double bytes_per_replicated_cell_3d = 1500.;
+    constexpr double gigabyte                     = 1024. * 1024. * 1024.;
 
     std::string
     number(const double x)
@@ -147,7 +151,8 @@ namespace dualcontact
   RunSize
   estimate_run_size(const Parameters  &parameters,
                     const double       initial_cells,
-                    const unsigned int n_ranks)
+                    const unsigned int n_ranks,
+                    const CellKind     kind)
   {
     const unsigned int          dim        = parameters.geometry.dimension;
     const double                children   = std::pow(2., dim);
@@ -173,12 +178,20 @@ namespace dualcontact
     size.step_growth = step_growth;
     size.cells       = initial_cells * std::pow(growth, size.cycle) *
                  std::pow(step_growth, size.adapts);
-    // FE_Q(k): k intervals of nodes along each cell edge
+    // FE_Q(k): k intervals of nodes along each cell edge; a square is 2
+    // triangles, a cube about 6 tetrahedra
+    const bool   simplex = kind == CellKind::simplex;
+    const double boxes =
+      simplex ? size.cells / (dim == 2 ? 2. : 6.) : size.cells;
     const double k     = parameters.discretization.degree;
-    const double nodes = std::pow(k * std::pow(size.cells, 1. / dim) + 1., dim);
+    const double nodes = std::pow(k * std::pow(boxes, 1. / dim) + 1., dim);
     size.dofs          = dim * nodes;
     size.memory        = n_ranks * bytes_per_rank +
                   (dim == 2 ? bytes_per_dof_2d : bytes_per_dof_3d) * size.dofs;
+    if (simplex)
+      size.memory += n_ranks * size.cells *
+                     (dim == 2 ? bytes_per_replicated_cell_2d :
+                                 bytes_per_replicated_cell_3d);
     return size;
   }
 
@@ -225,10 +238,13 @@ namespace dualcontact
     return limit;
   }
 
-  RunSizeCheck::RunSizeCheck(const Parameters &parameters, const MPI_Comm comm)
+  RunSizeCheck::RunSizeCheck(const Parameters &parameters,
+                             const MPI_Comm    comm,
+                             const CellKind    kind)
       : parameters(parameters)
       , comm(comm)
       , n_ranks(Utilities::MPI::n_mpi_processes(comm))
+      , kind(kind)
       , limit(memory_limit(comm))
       , memory(limit.bytes)
   {}
@@ -236,7 +252,8 @@ namespace dualcontact
   void
   RunSizeCheck::check(const double initial_cells, const bool exact) const
   {
-    const RunSize size = estimate_run_size(parameters, initial_cells, n_ranks);
+    const RunSize size =
+      estimate_run_size(parameters, initial_cells, n_ranks, kind);
     if (size.memory > memory)
       throw InputError("The scene is too large for the memory of this "
                        "machine: " +
@@ -248,7 +265,8 @@ namespace dualcontact
   void
   RunSizeCheck::warn(const double initial_cells) const
   {
-    const RunSize size = estimate_run_size(parameters, initial_cells, n_ranks);
+    const RunSize size =
+      estimate_run_size(parameters, initial_cells, n_ranks, kind);
     if (size.memory > 0.5 * memory &&
         Utilities::MPI::this_mpi_process(comm) == 0)
       std::cerr << "dualcontact: warning: the run needs more than half of "
@@ -292,6 +310,9 @@ namespace dualcontact
                 (n_ranks == 1 ? "" : " per rank") + " leaves" :
               " the machine has") +
            " (" + std::to_string(n_ranks) +
-           (n_ranks == 1 ? " rank)" : " ranks)");
+           (n_ranks == 1 ? " rank" : " ranks") +
+           (kind == CellKind::simplex ?
+              "; every rank holds the whole mesh of simplices)" :
+              ")");
   }
 } // namespace dualcontact

@@ -5,7 +5,6 @@
 
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -14,6 +13,7 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/mesh_file.h>
 #include <dualcontact/parameter_helpers.h>
@@ -181,23 +181,27 @@ namespace dualcontact
      */
     template <int dim, typename Mode>
     FullMatrix<double>
-    constrained_gram(
-      const parallel::distributed::Triangulation<dim> &triangulation,
-      const std::set<types::boundary_id>              &fixed,
-      const std::set<types::boundary_id>              &slider,
-      const unsigned int                               n_modes,
-      const Mode                                      &mode,
-      double                                          &measure)
+    constrained_gram(const Triangulation<dim>           &triangulation,
+                     const std::set<types::boundary_id> &fixed,
+                     const std::set<types::boundary_id> &slider,
+                     const unsigned int                  n_modes,
+                     const Mode                         &mode,
+                     double                             &measure)
     {
-      const QGauss<dim - 1> quadrature(2);
-      MappingQ1<dim>        mapping;
-      FE_Nothing<dim>       fe;
-      FEFaceValues<dim>     fe_face(mapping,
+      // the cells' straight-sided map: the boundary as its vertices'
+      // polygon (or polyhedron) is exact enough for the question asked
+      const CellKind                      kind = cell_kind(triangulation);
+      const FE_Nothing<dim>               fe(kind == CellKind::simplex ?
+                                 ReferenceCells::get_simplex<dim>() :
+                                 ReferenceCells::get_hypercube<dim>());
+      const std::unique_ptr<Mapping<dim>> mapping = make_mapping<dim>(kind, 1);
+      const Quadrature<dim - 1>           quadrature = face_quadrature(fe, 2);
+      FEFaceValues<dim>                   fe_face(*mapping,
                                 fe,
                                 quadrature,
                                 update_quadrature_points |
                                   update_normal_vectors | update_JxW_values);
-      FullMatrix<double>    gram(n_modes, n_modes);
+      FullMatrix<double>                  gram(n_modes, n_modes);
       measure = 0;
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -276,10 +280,28 @@ namespace dualcontact
                            before_building(n_cells * refined);
                        });
         check_mesh_against_parameters(parameters, coarse_mesh);
+        if (dualcontact::cell_kind(coarse_mesh) == CellKind::simplex)
+          GeometryParameters::check_simplices(
+            parameters, std::string("the cells of <Geometry/Mesh file>"));
+        else if (parameters.geometry.cell_kind == CellKind::simplex)
+          {
+            // each quadrilateral into 8 triangles (hexahedron into 24
+            // tetrahedra), the new vertices of curved faces onto their curve
+            Triangulation<dim> simplices;
+            GridGenerator::convert_hypercube_to_simplex_mesh(coarse_mesh,
+                                                             simplices);
+            snap_to_manifolds(parameters.geometry.manifolds, simplices);
+            coarse_mesh.clear();
+            coarse_mesh.copy_triangulation(simplices);
+          }
         const auto box   = GridTools::compute_bounding_box(coarse_mesh);
         mesh_lower_left  = box.get_boundary_points().first;
         mesh_upper_right = box.get_boundary_points().second;
       }
+
+    kind_ = parameters.geometry.type == GeometryType::mesh_file ?
+              dualcontact::cell_kind(coarse_mesh) :
+              parameters.geometry.cell_kind;
 
     const MaterialParameters &material = parameters.material;
     const BoundaryParameters &boundary = parameters.boundary;
@@ -456,20 +478,23 @@ namespace dualcontact
   template <int dim>
   void
   Scene<dim>::create_mesh(
-    parallel::distributed::Triangulation<dim> &triangulation,
-    const std::function<void(double)>         &before_refining) const
+    parallel::TriangulationBase<dim>  &triangulation,
+    const std::function<void(double)> &before_refining) const
   {
-    const GeometryParameters &g = parameters.geometry;
-    // each refinement makes 2^dim children of a cell
+    const GeometryParameters &g       = parameters.geometry;
+    const bool                simplex = kind_ == CellKind::simplex;
+    // each refinement makes 2^dim children of a cell (a triangle 4, a
+    // tetrahedron 8)
     const double children = std::pow(2., dim);
     if (g.type == GeometryType::rectangle)
       {
         // The box's cells are known before it is built: the product of the
         // subdivisions, taken in double (three of them overflow an
-        // integer long before the memory runs out).
+        // integer long before the memory runs out); 2 triangles or 5
+        // tetrahedra per box on simplices.
         if (before_refining)
           {
-            double n_cells = 1.;
+            double n_cells = simplex ? (dim == 2 ? 2. : 5.) : 1.;
             for (const unsigned int n : g.subdivisions)
               n_cells *= n;
             before_refining(
@@ -479,11 +504,35 @@ namespace dualcontact
           }
         std::vector<unsigned int> repetitions(g.subdivisions.begin(),
                                               g.subdivisions.end());
-        GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                  repetitions,
-                                                  to_point<dim>(g.lower_left),
-                                                  to_point<dim>(g.upper_right),
-                                                  /*colorize=*/true);
+        if (simplex)
+          {
+            // deal.II 9.4 does not colorize this one: the ids of the
+            // quadrilaterals' box, 2 d on the lower and 2 d + 1 on the upper
+            // side along x_d, by hand
+            Triangulation<dim> serial;
+            const Point<dim>   lower = to_point<dim>(g.lower_left);
+            const Point<dim>   upper = to_point<dim>(g.upper_right);
+            GridGenerator::subdivided_hyper_rectangle_with_simplices(
+              serial, repetitions, lower, upper);
+            for (const auto &face : serial.active_face_iterators())
+              if (face->at_boundary())
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const double tolerance = 1e-10 * (upper[d] - lower[d]);
+                    if (std::abs(face->center()[d] - lower[d]) < tolerance)
+                      face->set_boundary_id(2 * d);
+                    else if (std::abs(face->center()[d] - upper[d]) < tolerance)
+                      face->set_boundary_id(2 * d + 1);
+                  }
+            triangulation.copy_triangulation(serial);
+          }
+        else
+          GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                    repetitions,
+                                                    to_point<dim>(g.lower_left),
+                                                    to_point<dim>(
+                                                      g.upper_right),
+                                                    /*colorize=*/true);
       }
     else if (g.type == GeometryType::mesh_file)
       {
@@ -550,16 +599,39 @@ namespace dualcontact
               else
                 face->set_boundary_id(0);
             }
-        triangulation.copy_triangulation(serial);
+        if (simplex)
+          {
+            // each quadrilateral into 8 triangles (hexahedron into 24
+            // tetrahedra); the vertices this puts on the middle of the
+            // curved faces' chords go onto the circle (sphere)
+            Triangulation<dim> simplices;
+            GridGenerator::convert_hypercube_to_simplex_mesh(serial, simplices);
+            BoundaryManifold curve;
+            curve.id     = 0;
+            curve.kind   = dim == 2 ? BoundaryManifold::Kind::circle :
+                                      BoundaryManifold::Kind::sphere;
+            curve.center = g.center;
+            curve.radius = g.radius;
+            snap_to_manifolds({curve}, simplices);
+            triangulation.copy_triangulation(simplices);
+          }
+        else
+          triangulation.copy_triangulation(serial);
 
-        // The curved boundary follows the circle; the interior blends
-        // smoothly toward it, so refined cells stay well shaped.
-        triangulation.set_all_manifold_ids(1);
+        // The curved boundary follows the circle; on quadrilaterals the
+        // interior blends smoothly toward it, so refined cells stay well
+        // shaped (deal.II 9.4's transfinite interpolation takes no
+        // simplices: their cells stay flat).
+        triangulation.set_all_manifold_ids(simplex ? numbers::flat_manifold_id :
+                                                     1);
         triangulation.set_all_manifold_ids_on_boundary(0, 0);
         triangulation.set_manifold(0, SphericalManifold<dim>(center));
-        TransfiniteInterpolationManifold<dim> inner;
-        inner.initialize(triangulation);
-        triangulation.set_manifold(1, inner);
+        if (!simplex)
+          {
+            TransfiniteInterpolationManifold<dim> inner;
+            inner.initialize(triangulation);
+            triangulation.set_manifold(1, inner);
+          }
       }
 
     if (before_refining)
@@ -587,14 +659,16 @@ namespace dualcontact
     for (unsigned int step = 0; step < g.pre_refinement_steps;
          ++step, distance *= g.pre_refinement_grading)
       {
+        // (a replicated mesh of simplices refines the cells that every
+        // rank flags alike: all of them are flagged)
         unsigned int n_flagged = 0;
         for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
+          if (cell->is_locally_owned() || simplex)
             for (const unsigned int v : cell->vertex_indices())
               if (initial_gap(cell->vertex(v)) <= distance)
                 {
                   cell->set_refine_flag();
-                  ++n_flagged;
+                  n_flagged += cell->is_locally_owned() ? 1 : 0;
                   break;
                 }
         if (before_refining)
@@ -617,9 +691,8 @@ namespace dualcontact
 
   template <int dim>
   bool
-  Scene<dim>::translation_is_free(
-    const Tensor<1, dim>                            &e,
-    const parallel::distributed::Triangulation<dim> &triangulation) const
+  Scene<dim>::translation_is_free(const Tensor<1, dim>     &e,
+                                  const Triangulation<dim> &triangulation) const
   {
     double     measure = 0;
     const auto gram    = constrained_gram(
@@ -653,9 +726,8 @@ namespace dualcontact
 
   template <int dim>
   FullMatrix<double>
-  Scene<dim>::rigid_motion_gram(
-    const parallel::distributed::Triangulation<dim> &triangulation,
-    double                                          &measure) const
+  Scene<dim>::rigid_motion_gram(const Triangulation<dim> &triangulation,
+                                double                   &measure) const
   {
     return constrained_gram(
       triangulation,
@@ -670,8 +742,7 @@ namespace dualcontact
 
   template <int dim>
   void
-  Scene<dim>::check_rigid_motions(
-    const parallel::distributed::Triangulation<dim> &triangulation) const
+  Scene<dim>::check_rigid_motions(const Triangulation<dim> &triangulation) const
   {
     if (effects_.contact)
       return; // semi-coercive is allowed: contact holds the body

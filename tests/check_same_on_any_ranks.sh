@@ -1,28 +1,36 @@
 #!/usr/bin/env bash
-# The test adaptive_same_on_any_ranks: tests/prm/adaptive_block.prm (a block
-# on the foundation under a uniform traction and its own weight, whose
-# refinement indicators tie along every row of cells) refined adaptively
-# over 5 cycles, with 'contact' and with 'kelly' coarsening 10 % of the
-# cells, on 1, 2, 3 and 4 ranks (3 and 4 oversubscribed on a 2-core
-# machine). Passes if, for each strategy, every number of ranks gives on
-# every cycle the same cells, DoFs, contact nodes and active nodes as 1 rank,
-# and the same contact force, largest pressure and ||u||_L2 to 1e-8
-# relative (the solvers' tolerances leave differences of 1e-9 at most).
-# Marking the cells by the round-off of their indicators, or smoothing the
-# mesh with the flags each rank sees, gives 512 cells on the third mesh on
-# 1 rank and 488 on 2.
-#   bash check_adaptive_ranks.sh <dualcontact> <mpirun> <scene> <work dir>
+# A scene solved on 1, 2, 3 and 4 ranks (3 and 4 oversubscribed on a 2-core
+# machine), in each of the variants given: "name|Entry=value|Entry=value"
+# (the entries as --set takes them). Passes if, for each variant, every
+# number of ranks gives on every cycle the same cells, DoFs, contact nodes
+# and active nodes as 1 rank, and the same contact force, largest pressure
+# and ||u||_L2 to 1e-8 relative (the solvers' tolerances leave differences
+# of 1e-9 at most).
+#   bash check_same_on_any_ranks.sh <dualcontact> <mpirun> <scene> <work dir>
+#        <variant>...
+# The tests (tests/CMakeLists.txt):
+# - adaptive_same_on_any_ranks: tests/prm/adaptive_block.prm (a block on the
+#   foundation under a uniform traction and its own weight, whose refinement
+#   indicators tie along every row of cells) refined adaptively over 5
+#   cycles, with 'contact' and with 'kelly' coarsening 10 % of the cells.
+#   Marking the cells by the round-off of their indicators, or smoothing the
+#   mesh with the flags each rank sees, gives 512 cells on the third mesh on
+#   1 rank and 488 on 2.
+# - simplices_same_on_any_ranks: prm/hertz_friction.prm on triangles, whose
+#   mesh every rank holds whole and partitions by itself.
 set -euo pipefail
 program="$1"
 mpirun="$2"
 scene="$3"
 work="$4"
+shift 4
+[ $# -gt 0 ] || { echo "check_same_on_any_ranks: no variant given" >&2; exit 1; }
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
 
 fail() {
-  echo "check_adaptive_ranks: $*" >&2
+  echo "check_same_on_any_ranks: $*" >&2
   exit 1
 }
 
@@ -30,21 +38,24 @@ fail() {
 exact="cycle cells dofs contact_nodes active_nodes"
 near="contact_force max_pressure u_l2"
 
-for strategy in contact kelly; do
-  coarsen=0
-  [ "$strategy" = kelly ] && coarsen=0.1
+for variant in "$@"; do
+  IFS='|' read -r -a fields <<< "$variant"
+  name="${fields[0]}"
+  settings=()
+  for entry in "${fields[@]:1}"; do
+    settings+=(--set "$entry")
+  done
   for np in 1 2 3 4; do
-    out="${strategy}_np$np"
+    out="${name}_np$np"
     "$mpirun" --oversubscribe -np "$np" "$program" "$scene" \
-      --set "Refinement/Strategy=$strategy" \
-      --set "Refinement/Coarsen fraction=$coarsen" \
+      "${settings[@]}" \
       --set "Output/Directory=$out" > "$out.log" 2>&1 ||
-      fail "the run '$strategy' on $np rank(s) failed (see $work/$out.log)"
+      fail "the run '$name' on $np rank(s) failed (see $work/$out.log)"
     [ -f "$out/cycles.csv" ] || fail "no $out/cycles.csv"
   done
-  echo "$strategy (cells/DoFs per cycle):"
+  echo "$name (cells/DoFs per cycle):"
   for np in 1 2 3 4; do
-    echo "  $np rank(s): $(awk -F, 'NR > 1 { printf " %s/%s", $2, $3 }' "${strategy}_np$np/cycles.csv")"
+    echo "  $np rank(s): $(awk -F, 'NR > 1 { printf " %s/%s", $2, $3 }' "${name}_np$np/cycles.csv")"
   done
   for np in 2 3 4; do
     awk -F, -v exact="$exact" -v near="$near" -v np="$np" '
@@ -71,8 +82,8 @@ for strategy in contact kelly; do
         last = FNR
       }
       END { if (last != rows) { print "the run on " np " ranks has " last - 1 " cycles, on 1 rank " rows - 1; bad = 1 }
-            exit bad }' "${strategy}_np1/cycles.csv" "${strategy}_np$np/cycles.csv" >&2 ||
-      fail "'$strategy' on $np ranks differs from 1 rank"
+            exit bad }' "${name}_np1/cycles.csv" "${name}_np$np/cycles.csv" >&2 ||
+      fail "'$name' on $np ranks differs from 1 rank"
   done
 done
-echo "check_adaptive_ranks: passed"
+echo "check_same_on_any_ranks: passed"

@@ -17,7 +17,8 @@
 #          set Write vtu    = false
 #          set Directory    = output
 #        end
-#    A relative <Geometry/Mesh file> is made absolute (from PRM's folder).
+#    A relative <Geometry/Mesh file> or include is made absolute (from PRM's
+#    folder).
 #    An entry set twice in a parameter file is an error (exit status 4), so
 #    the 'set' lines of PRM for the entries that OVERRIDES or the Output
 #    block set are left out of scene.prm (found by subsection and name; PRM
@@ -199,10 +200,13 @@ string(APPEND _overlay
   "  set Directory    = output\n"
   "end\n")
 file(READ "${PRM}" _scene)
-# scene.prm is written to WORK_DIR, so a relative <Geometry/Mesh file> (taken
-# from the folder of the file that sets it) is made absolute from PRM's folder
+# scene.prm is written to WORK_DIR, so a relative <Geometry/Mesh file> or
+# include (taken from the folder of the file that names it) is made absolute
+# from PRM's folder
 get_filename_component(_prm_folder "${PRM}" DIRECTORY)
 string(REGEX REPLACE "(\n[ \t]*set[ \t]+Mesh file[ \t]*=[ \t]*)([^/ \t\n#][^\n#]*)"
+  "\\1${_prm_folder}/\\2" _scene "${_scene}")
+string(REGEX REPLACE "(\n[ \t]*include[ \t]+)([^/ \t\n#][^\n#]*)"
   "\\1${_prm_folder}/\\2" _scene "${_scene}")
 _prm_lines("${_overlay}" _overlay_lines)
 _prm_walk("${_overlay_lines}" "" _overlay_keys _unused)

@@ -11,13 +11,12 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 
-#include <deal.II/distributed/solution_transfer.h>
-#include <deal.II/distributed/tria.h>
+#include <deal.II/distributed/tria_base.h>
 
 #include <deal.II/dofs/dof_handler.h>
 
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -26,7 +25,9 @@
 #include <dualcontact/contact_functions.h>
 #include <dualcontact/contact_set.h>
 #include <dualcontact/contact_system.h>
+#include <dualcontact/discretization.h>
 #include <dualcontact/elasticity.h>
+#include <dualcontact/field_transfer.h>
 #include <dualcontact/newton_solver.h>
 #include <dualcontact/parameters.h>
 #include <dualcontact/probes.h>
@@ -368,11 +369,15 @@ namespace dualcontact
     mutable TimerOutput computing_timer; // const phases are timed too
     Report<dim>         report;
 
-    // mesh and finite element
-    parallel::distributed::Triangulation<dim> triangulation;
-    const MappingQ<dim>                       mapping;
-    const FESystem<dim>                       fe;
-    DoFHandler<dim>                           dof_handler;
+    // mesh and finite element, of the kind of cells the scene has
+    // (discretization.h)
+    const std::unique_ptr<parallel::TriangulationBase<dim>> triangulation_ptr;
+    const std::unique_ptr<const Mapping<dim>>               mapping_ptr;
+    const std::unique_ptr<const FiniteElement<dim>>         fe_ptr;
+    parallel::TriangulationBase<dim>                       &triangulation;
+    const Mapping<dim>                                     &mapping;
+    const FiniteElement<dim>                               &fe;
+    DoFHandler<dim>                                         dof_handler;
 
     // index sets and constraints: hanging nodes alone; all of them (hanging
     // nodes, then Dirichlet, then sliders); and all with zero values, for
@@ -408,10 +413,8 @@ namespace dualcontact
 
     // nested iteration: the transfer of v, the multipliers and the
     // threshold across a refinement, and what it carried to the new mesh
-    std::unique_ptr<parallel::distributed::
-                      SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>
-         transfer;
-    bool carried = false;
+    std::unique_ptr<FieldTransfer<dim>> transfer;
+    bool                                carried = false;
     // ... or from the previous load step
     bool carried_from_step = false;
     // ... on the same mesh: K is the matrix of the previous step's solve

@@ -14,7 +14,10 @@ namespace dualcontact
    * diagonal M with M_ii = int phi_i, the row sums of the mass matrix int
    * u.v after condensation (zero on constrained DoFs). It weighs the
    * proximal term like the mass matrix does, is positive on every free DoF,
-   * and costs one vector instead of a matrix.
+   * and costs one vector instead of a matrix. On simplices, whose P2 vertex
+   * functions integrate to zero, each cell's M_ii is its diagonal
+   * int phi_i^2 scaled to sum to the cell's measure per component (the
+   * row sums again for P1).
    */
   struct LumpedMass
   {

@@ -61,14 +61,27 @@ namespace dualcontact
 
   /**
    * Give the faces of each id of <Geometry/Manifolds> (and their edges) its
-   * circle, sphere or cylinder, and every cell a transfinite interpolation
-   * of its boundary (as the built-in half disc does); nothing if there are
-   * no manifolds. Call on the coarse mesh, before any refinement.
+   * circle, sphere or cylinder, and every cell next to them a transfinite
+   * interpolation of its boundary (as the built-in half disc does; on
+   * simplices the cells stay flat); nothing if there are no manifolds. Call
+   * on the coarse mesh, before any refinement.
    */
   template <int dim>
   void
   attach_manifolds(const GeometryParameters &geometry,
                    Triangulation<dim>       &triangulation);
+
+  /**
+   * Move every vertex of a boundary face of each manifold's id onto the
+   * manifold, along the radius (of the circle or sphere; of the cylinder,
+   * normal to its axis): for the vertices that splitting quadrilaterals
+   * into triangles (hexahedra into tetrahedra) puts at the middle of a
+   * curved face's chord.
+   */
+  template <int dim>
+  void
+  snap_to_manifolds(const std::vector<BoundaryManifold> &manifolds,
+                    Triangulation<dim>                  &triangulation);
 } // namespace dualcontact
 
 #endif

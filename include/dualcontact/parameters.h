@@ -39,6 +39,16 @@ namespace dualcontact
     mesh_file // a Gmsh .msh file (doc/meshes.md)
   };
 
+  /**
+   * Quadrilaterals (hexahedra in 3D) with FE_Q(k), or simplices, triangles
+   * (tetrahedra) with FE_SimplexP(k): <Geometry/Cell type> (discretization.h).
+   */
+  enum class CellKind
+  {
+    quadrilateral,
+    simplex
+  };
+
   /** The condition on one part of the boundary (doc/theory.md §1). */
   enum class BoundaryCondition
   {
@@ -66,6 +76,8 @@ namespace dualcontact
   /** The names of the choices, as the .prm file writes them. */
   const NameTable<GeometryType> &
   geometry_type_names();
+  const NameTable<CellKind> &
+  cell_kind_names();
   const NameTable<BoundaryCondition> &
   boundary_condition_names();
   const NameTable<FrictionStrategy> &
@@ -123,6 +135,7 @@ namespace dualcontact
   {
     unsigned int              dimension = 2;
     GeometryType              type      = GeometryType::rectangle;
+    CellKind                  cell_kind = CellKind::quadrilateral;
     std::vector<double>       lower_left;
     std::vector<double>       upper_right;
     std::vector<unsigned int> subdivisions;
@@ -155,6 +168,14 @@ namespace dualcontact
     /** Pre-refinement refines toward the contact boundary: it needs one. */
     void
     check_pre_refinement(const Parameters &parameters) const;
+    /**
+     * What simplices do not take (degree 3, degree 2 on tetrahedra, local
+     * refinement but the 2D pre-refinement); `why` says where the simplices
+     * come from (the entry, or the cells of the mesh file). Throws
+     * InputError.
+     */
+    static void
+    check_simplices(const Parameters &parameters, const std::string &why);
     std::vector<IneffectiveRule>
     ineffective_rules(const Parameters &parameters) const;
   };

@@ -91,11 +91,11 @@ namespace dualcontact
    */
   template <int dim>
   void
-  mark_fixed_number(parallel::distributed::Triangulation<dim> &triangulation,
-                    const Vector<float>                       &indicator,
-                    const double                               scale,
-                    const double                               refine_fraction,
-                    const double                               coarsen_fraction,
+  mark_fixed_number(Triangulation<dim>  &triangulation,
+                    const Vector<float> &indicator,
+                    const double         scale,
+                    const double         refine_fraction,
+                    const double         coarsen_fraction,
                     const double tie_tolerance = indicator_tie_tolerance);
 } // namespace dualcontact
 

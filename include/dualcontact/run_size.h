@@ -33,13 +33,17 @@ namespace dualcontact
    * each later step adapts it once more, by 1 + (2^dim - 1) r - (1 -
    * 2^-dim) c with the refine and coarsen fractions r, c (at least 1:
    * p4est coarsens only whole families); a mesh of FE_Q(k) has about (k
-   * cells^(1/dim) + 1)^dim nodes (exact for a cube of n^dim cells). The
-   * memory follows from measurements of Q1 runs per DoF (run_size.cc).
+   * cells^(1/dim) + 1)^dim nodes (exact for a cube of n^dim cells), a mesh
+   * of simplices as many as one of a half (2D) or a sixth (3D) as many
+   * quadrilaterals (hexahedra). The memory follows from measurements of Q1
+   * runs per DoF (run_size.cc), and on simplices, whose mesh every rank
+   * holds whole, from measurements per cell and rank.
    */
   RunSize
   estimate_run_size(const Parameters  &parameters,
                     const double       initial_cells,
-                    const unsigned int n_ranks);
+                    const unsigned int n_ranks,
+                    const CellKind     kind = CellKind::quadrilateral);
 
   /** The memory a run may use, and what sets it. */
   struct MemoryLimit
@@ -82,7 +86,9 @@ namespace dualcontact
   class RunSizeCheck
   {
   public:
-    RunSizeCheck(const Parameters &parameters, const MPI_Comm comm);
+    RunSizeCheck(const Parameters &parameters,
+                 const MPI_Comm    comm,
+                 const CellKind    kind = CellKind::quadrilateral);
 
     /**
      * `initial_cells` is what the initial mesh will have at least (before
@@ -105,6 +111,7 @@ namespace dualcontact
     const Parameters  &parameters;
     const MPI_Comm     comm;
     const unsigned int n_ranks;
+    const CellKind     kind;
     const MemoryLimit  limit;
     const double       memory;
   };

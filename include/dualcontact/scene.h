@@ -8,12 +8,13 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <deal.II/distributed/tria.h>
+#include <deal.II/distributed/tria_base.h>
 
 #include <deal.II/grid/tria.h>
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/friction_law.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameters.h>
@@ -96,8 +97,17 @@ namespace dualcontact
      * built.
      */
     void
-    create_mesh(parallel::distributed::Triangulation<dim> &triangulation,
+    create_mesh(parallel::TriangulationBase<dim>  &triangulation,
                 const std::function<void(double)> &before_refining = {}) const;
+    /**
+     * The kind of cells the mesh is made of: <Geometry/Cell type>, or the
+     * cells of a mesh file of triangles or tetrahedra.
+     */
+    CellKind
+    cell_kind() const
+    {
+      return kind_;
+    }
 
     /**
      * Throw InputError if the scene leaves a rigid motion free and nothing
@@ -105,8 +115,7 @@ namespace dualcontact
      * be singular. Semi-coercive scenes with contact are allowed.
      */
     void
-    check_rigid_motions(
-      const parallel::distributed::Triangulation<dim> &triangulation) const;
+    check_rigid_motions(const Triangulation<dim> &triangulation) const;
 
     /** dim translations, then dim(dim-1)/2 rotations. */
     static constexpr unsigned int n_rigid_motions = dim * (dim + 1) / 2;
@@ -127,18 +136,16 @@ namespace dualcontact
      * left free by the boundary conditions iff G c = 0. Collective.
      */
     FullMatrix<double>
-    rigid_motion_gram(
-      const parallel::distributed::Triangulation<dim> &triangulation,
-      double                                          &measure) const;
+    rigid_motion_gram(const Triangulation<dim> &triangulation,
+                      double                   &measure) const;
 
     /**
      * Whether the rigid translation along e is left free by the fixed and
      * normal-fixed boundaries (only contact could stop it).
      */
     bool
-    translation_is_free(
-      const Tensor<1, dim>                            &e,
-      const parallel::distributed::Triangulation<dim> &triangulation) const;
+    translation_is_free(const Tensor<1, dim>     &e,
+                        const Triangulation<dim> &triangulation) const;
 
     const Effects &
     effects() const
@@ -241,6 +248,7 @@ namespace dualcontact
     // its bounding box
     Triangulation<dim> coarse_mesh;
     Point<dim>         mesh_lower_left, mesh_upper_right;
+    CellKind           kind_ = CellKind::quadrilateral;
 
     Effects                                                      effects_;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> displacements;

@@ -9,3 +9,6 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 gmsh -2 -format msh41 half_disc.geo -o half_disc.msh
 gmsh -2 -format msh22 half_disc.geo -o half_disc_v22.msh
 gmsh -3 -format msh41 half_cylinder.geo -o half_cylinder.msh
+# graded meshes of simplices: triangles (2D), tetrahedra (3D)
+gmsh -2 -format msh41 half_disc_triangles.geo -o half_disc_triangles.msh
+gmsh -3 -format msh41 ball_octant_tetrahedra.geo -o ball_octant_tetrahedra.msh

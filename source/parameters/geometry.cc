@@ -4,6 +4,7 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameter_helpers.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/refinement_indicator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -123,6 +124,15 @@ namespace dualcontact
     return table;
   }
 
+  const NameTable<CellKind> &
+  cell_kind_names()
+  {
+    static const NameTable<CellKind> table = {{CellKind::quadrilateral,
+                                               "quadrilateral"},
+                                              {CellKind::simplex, "simplex"}};
+    return table;
+  }
+
   const NameTable<BoundaryManifold::Kind> &
   manifold_kind_names()
   {
@@ -165,19 +175,34 @@ namespace dualcontact
       "and 1 (the flat top); refinement follows the circle. 'quarter disc' "
       "(2D): the lower right quarter (x >= x_c, y <= y_c) with ids 0 (curved), "
       "1 (flat top) and 2 (the symmetry line x = x_c). 'mesh file': the "
-      "coarse mesh of <Geometry/Mesh file> (Gmsh, quadrilaterals in 2D, "
-      "hexahedra in 3D), whose physical groups are the boundary ids; "
+      "coarse mesh of <Geometry/Mesh file> (Gmsh: quadrilaterals or "
+      "triangles in 2D, hexahedra or tetrahedra in 3D), whose physical "
+      "groups are the boundary ids; "
       "<Geometry/Manifolds> makes curved parts stay curved under refinement "
       "(doc/meshes.md).");
+    declarer.declare_entry(
+      "Cell type",
+      "quadrilateral",
+      EntryPattern::selection(cell_kind_names().names()),
+      "The cells of the mesh and their element. 'quadrilateral' "
+      "(hexahedra in 3D): FE_Q(k) and MappingQ(k) on a mesh that p4est "
+      "distributes over the ranks. 'simplex': triangles (tetrahedra in 3D) "
+      "with FE_SimplexP(k), k = 1 or 2 (1 in 3D with contact), straight-"
+      "sided, on a mesh every rank holds whole; the rectangle splits each "
+      "cell into 2 triangles (5 tetrahedra), the discs and a mesh file of "
+      "quadrilaterals (hexahedra) each cell into 8 triangles (24 "
+      "tetrahedra), and refinement halves every cell, so the meshes are "
+      "nested (doc/simplices.md). A mesh file of triangles or tetrahedra is "
+      "read as simplices whatever this entry says.");
     declarer.declare_entry(
       "Mesh file",
       "",
       EntryPattern::file_name(),
       "Type 'mesh file': the Gmsh mesh (.msh, ASCII, format 2.2 or 4.1), a "
       "path relative to the folder of the .prm file that sets it (given by "
-      "--set: relative to the working directory). It must hold only "
-      "quadrilaterals (2D) or hexahedra (3D), the coarse mesh that the "
-      "refinement starts from. Physical groups of curves (2D) or surfaces "
+      "--set: relative to the working directory). It must hold one kind of "
+      "cell, quadrilaterals or triangles (2D), hexahedra or tetrahedra (3D): "
+      "the coarse mesh that the refinement starts from. Physical groups of curves (2D) or surfaces "
       "(3D) become boundary ids, the numbers of <Boundary conditions/"
       "Conditions>; every boundary face must be in one (Gmsh's 'Physical "
       "Curve(0) = {...};' gives id 0). Coordinates are in [length].");
@@ -260,6 +285,7 @@ namespace dualcontact
     dimension               = prm.get_integer("Dimension");
     const std::string shape = prm.get("Type");
     type                    = geometry_type_names().value(shape);
+    cell_kind               = cell_kind_names().value(prm.get("Cell type"));
     lower_left              = parse_doubles(prm.get("Lower left corner"));
     upper_right             = parse_doubles(prm.get("Upper right corner"));
     subdivisions.clear();
@@ -439,6 +465,50 @@ namespace dualcontact
       throw InputError("The entry <Geometry/Pre-refinement steps> refines "
                        "toward the foundation, but the scene has no contact "
                        "boundary.",
+                       exit_inconsistent);
+  }
+
+  void
+  GeometryParameters::check_simplices(const Parameters  &parameters,
+                                      const std::string &why)
+  {
+    const unsigned int dim    = parameters.geometry.dimension;
+    const unsigned int degree = parameters.discretization.degree;
+    const bool         contact =
+      !parameters.boundary.ids_with(BoundaryCondition::contact).empty();
+    const std::string simplices = dim == 2 ? "triangles" : "tetrahedra";
+    const std::string head =
+      "The mesh is made of " + simplices + " (" + why + "), and deal.II 9.4 ";
+    if (degree > 2)
+      throw InputError(head + "has FE_SimplexP of degree 1 and 2 only: set "
+                              "<Discretization/Polynomial degree> to 1 or 2.",
+                       exit_inconsistent);
+    if (dim == 3 && degree == 2 && contact)
+      throw InputError(
+        "The mesh is made of tetrahedra (" + why +
+          ") and <Discretization/Polynomial degree> is 2: on a triangle "
+          "face the shape functions of P2's vertices integrate to zero, so "
+          "the contact nodes at the vertices would get no weight m_s "
+          "(doc/simplices.md). Use degree 1 on tetrahedra, or hexahedra.",
+        exit_inconsistent);
+    const RefinementParameters &refinement = parameters.refinement;
+    const bool                  adapts =
+      refinement.n_cycles > 1 || (parameters.load_path.adapt_at_every_step &&
+                                  parameters.load_path.step_times().size() > 1);
+    if (adapts &&
+        !refinement_indicator_kind(refinement.strategy).refines_every_cell())
+      throw InputError(head +
+                         "has neither the error estimators nor the "
+                         "coarsening that <Refinement/Strategy> " +
+                         quoted(refinement.strategy) +
+                         " needs on them: use 'global', which halves every "
+                         "cell (nested meshes).",
+                       exit_inconsistent);
+    if (dim == 3 && parameters.geometry.pre_refinement_steps > 0)
+      throw InputError(head + "has no hanging nodes on tetrahedra, which "
+                              "<Geometry/Pre-refinement steps> would make: "
+                              "set it to 0, and grade the mesh in Gmsh "
+                              "instead (doc/meshes.md).",
                        exit_inconsistent);
   }
 

@@ -6,6 +6,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/refinement.h>
 #include <dualcontact/refinement_indicator.h>
 
@@ -38,8 +39,8 @@ namespace dualcontact
       const std::set<types::boundary_id>  &contact_ids = input.contact_ids;
       const MaterialParameters            &material = input.parameters.material;
       const FiniteElement<dim>            &fe       = dof_handler.get_fe();
-      const QGauss<dim - 1>                quadrature(fe.degree + 1);
-      FEFaceValues<dim>                    fe_face(mapping,
+      const Quadrature<dim - 1> quadrature = face_quadrature(fe, fe.degree + 1);
+      FEFaceValues<dim>         fe_face(mapping,
                                 fe,
                                 quadrature,
                                 update_values | update_gradients |

@@ -27,27 +27,6 @@ namespace
            std::to_string(k) + "\nend\n";
   }
 
-  /** The largest |l1_s - p| and |l2_s - q| over all ranks' contact nodes. */
-  template <int dim>
-  std::pair<double, double>
-  deviation(const SceneRun<dim> &run, const double p, const Tensor<1, dim> &q)
-  {
-    const ContactSet<dim> &contact = run.problem->contact();
-    double                 l1 = 0., l2 = 0.;
-    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
-      {
-        l1 = std::max(l1, std::abs(contact.l1[s] - p));
-        if (contact.friction)
-          {
-            Tensor<1, dim> traction;
-            for (unsigned int k = 0; k + 1 < dim; ++k)
-              traction += contact.l2[s][k] * contact.nodes[s].tangents[k];
-            l2 = std::max(l2, (traction - q).norm());
-          }
-      }
-    return {Utilities::MPI::max(l1, run.comm),
-            Utilities::MPI::max(l2, run.comm)};
-  }
 } // namespace
 
 TEST_CASE("Patch test at degree 1, 2 and 3: every nodal pressure equals the "
@@ -192,38 +171,10 @@ TEST_CASE("Patch tests at degree 1, 2 and 3 in 2D with friction and in 3D "
           "without: exact tractions at every node, every node in contact",
           "[degree]")
 {
-  // prm/patch.prm (E = 1000, nu = 0, the block [0, 2] x [0, 1]) turned into
-  // the 2D twin of prm/patch_3d.prm: the uniform stress sigma_yy = -1,
-  // sigma_xy = 0.2 (tractions (0.2, -1) on the top, (0, -+0.2) on the
-  // sides), Coulomb friction F = 0.4 on the bottom. The plane carries
-  // p = 1 and the shear 0.2 < F p at every node, which all stick;
-  // u = (4e-4 y, -1e-3 y) is in the space of every degree.
-  const std::string friction_2d =
-    "subsection Boundary conditions\n"
-    "  set Conditions = 0: traction, 1: traction, 2: contact, 3: traction\n"
-    "  set Tractions  = 0: 0; -0.2, 1: 0; 0.2, 3: 0.2; -1\nend\n"
-    "subsection Friction\n  set Law = coulomb\n  set Coefficient = 0.4\nend\n"
-    "subsection Exact solution\n  set Displacement = 0.0004 * y; -0.001 * y\n"
-    "  set Contact pressure = 1\nend\n"
-    "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
-  // prm/patch_3d.prm without friction and without shear: the pressure 1 on
-  // the top alone; u = (0, 0, -1e-3 z). The planes x = 0 and y = 0 are
-  // symmetry planes: without them the lateral motions are free and only
-  // the proximal term holds them, to the Uzawa tolerance, not to round-off.
-  const std::string frictionless_3d =
-    "subsection Boundary conditions\n"
-    "  set Conditions = 0: normal fixed, 2: normal fixed, 4: contact, 5: "
-    "traction\n"
-    "  set Tractions  = 5: 0; 0; -1\nend\n"
-    "subsection Friction\n  set Law = none\nend\n"
-    "subsection Exact solution\n  set Displacement = 0; 0; -0.001 * z\n"
-    "  set Contact pressure = 1\nend\n"
-    "subsection Refinement\n  set Number of cycles = 1\nend\n"
-    "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
   for (const unsigned int k : {1u, 2u, 3u})
     {
       {
-        const Run          run("patch.prm", degree(k) + friction_2d);
+        const Run          run("patch.prm", degree(k) + patch_stick_2d);
         const CycleResult &r = run.last();
         Tensor<1, 2>       q;
         q[0]                = 0.2;
@@ -241,7 +192,10 @@ TEST_CASE("Patch tests at degree 1, 2 and 3 in 2D with friction and in 3D "
         CHECK(l2 <= 1e-8);
       }
       {
-        const SceneRun<3>  run("patch_3d.prm", degree(k) + frictionless_3d);
+        const SceneRun<3>  run("patch_3d.prm",
+                              degree(k) + patch_frictionless_3d +
+                                "subsection Refinement\n  set Number of "
+                                 "cycles = 1\nend\n");
         const CycleResult &r = run.last();
         const auto [l1, l2]  = deviation(run, 1., Tensor<1, 3>());
         INFO("3D, degree " << k << ": error "

@@ -1,5 +1,6 @@
-// Bad input for tests/prm/bad/mesh_tetrahedra.prm: a unit cube meshed with
-// tetrahedra. gmsh -3 -format msh41 tetrahedra.geo
+// A unit cube meshed with tetrahedra, for
+// tests/prm/bad/mesh_tetrahedra_degree_2.prm. gmsh -3 -format msh41
+// tetrahedra.geo
 SetFactory("OpenCASCADE");
 Box(1) = {0, 0, 0, 1, 1, 1};
 Mesh.MeshSizeMin = 1;

@@ -1,0 +1,94 @@
+// The two kinds of cells and what each takes: the triangulation, the
+// finite element, the mapping and the quadrature rules (doc/theory.md §4,
+// doc/simplices.md).
+#ifndef dualcontact_discretization_h
+#define dualcontact_discretization_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/distributed/tria_base.h>
+
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <dualcontact/parameters.h>
+
+#include <memory>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  /**
+   * The empty triangulation of the kind (CellKind, parameters.h), on the
+   * communicator. Quadrilaterals (hexahedra in 3D): a
+   * parallel::distributed::Triangulation (p4est: each rank holds its own
+   * cells and a layer of ghosts). Simplices: a
+   * parallel::shared::Triangulation (p4est takes no simplices: every rank
+   * holds the whole mesh and owns a part of its cells).
+   */
+  template <int dim>
+  std::unique_ptr<parallel::TriangulationBase<dim>>
+  make_triangulation(CellKind kind, MPI_Comm mpi_communicator);
+
+  /** FESystem of dim copies of FE_Q(degree) or FE_SimplexP(degree). */
+  template <int dim>
+  std::unique_ptr<FiniteElement<dim>>
+  make_element(CellKind kind, unsigned int degree);
+
+  /**
+   * MappingQ(degree), which follows curved boundaries at that order; on
+   * simplices StraightSimplexMapping, whatever the degree.
+   */
+  template <int dim>
+  std::unique_ptr<Mapping<dim>>
+  make_mapping(CellKind kind, unsigned int degree);
+
+  /**
+   * The affine map of each simplex from its vertices. Refinement still puts
+   * new vertices on the manifolds of the triangulation (the circle of a
+   * half disc), so a curved boundary is its polygon of vertices at every
+   * degree. deal.II 9.4's MappingFE asks that all parts of a cell carry the
+   * cell's manifold id, which a cell with one face on a curve does not; its
+   * vertices are all this map needs.
+   */
+  template <int dim>
+  class StraightSimplexMapping : public MappingFE<dim>
+  {
+  public:
+    StraightSimplexMapping();
+
+    std::unique_ptr<Mapping<dim>>
+    clone() const override;
+
+  protected:
+    std::vector<Point<dim>>
+    compute_mapping_support_points(
+      const typename Triangulation<dim>::cell_iterator &cell) const override;
+  };
+
+  /**
+   * Gauss rules with n points per direction on the element's cells and on
+   * their faces: QGauss on quadrilaterals and hexahedra and on the lines
+   * that bound a triangle; QGaussSimplex on triangles and tetrahedra, at
+   * most 4 points per direction (exact to degree 7, the highest deal.II 9.4
+   * has), which covers every product of P1 and P2 shape functions the code
+   * integrates.
+   */
+  template <int dim>
+  Quadrature<dim>
+  cell_quadrature(const FiniteElement<dim> &fe, unsigned int n);
+
+  template <int dim>
+  Quadrature<dim - 1>
+  face_quadrature(const FiniteElement<dim> &fe, unsigned int n);
+
+  /** The kind of the cells of a triangulation (simplex if any is one). */
+  template <int dim>
+  CellKind
+  cell_kind(const Triangulation<dim> &triangulation);
+} // namespace dualcontact
+
+#endif

@@ -1,0 +1,152 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/grid/reference_cell.h>
+
+#include <dualcontact/discretization.h>
+
+#include <algorithm>
+
+namespace dualcontact
+{
+  template <int dim>
+  std::unique_ptr<parallel::TriangulationBase<dim>>
+  make_triangulation(const CellKind kind, const MPI_Comm mpi_communicator)
+  {
+    if (kind == CellKind::simplex)
+      // The z-order of the cell centres partitions the same mesh the same
+      // way on every rank, whatever the mesh; no artificial cells, so that
+      // every rank can carry fields over a refinement on its own (see
+      // FieldTransfer).
+      return std::make_unique<parallel::shared::Triangulation<dim>>(
+        mpi_communicator,
+        Triangulation<dim>::none,
+        /*allow_artificial_cells=*/false,
+        parallel::shared::Triangulation<dim>::partition_zorder);
+    // Mesh smoothing: only the 2:1 balance at vertices, which p4est
+    // enforces on the whole forest. deal.II's other smoothing flags act on
+    // the refinement flags each rank sees, so they would make the adaptive
+    // meshes depend on the number of ranks.
+    return std::make_unique<parallel::distributed::Triangulation<dim>>(
+      mpi_communicator, Triangulation<dim>::limit_level_difference_at_vertices);
+  }
+
+  template <int dim>
+  std::unique_ptr<FiniteElement<dim>>
+  make_element(const CellKind kind, const unsigned int degree)
+  {
+    if (kind == CellKind::simplex)
+      return std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
+    return std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
+  }
+
+  template <int dim>
+  std::unique_ptr<Mapping<dim>>
+  make_mapping(const CellKind kind, const unsigned int degree)
+  {
+    if (kind == CellKind::simplex)
+      return std::make_unique<StraightSimplexMapping<dim>>();
+    return std::make_unique<MappingQ<dim>>(degree);
+  }
+
+  template <int dim>
+  StraightSimplexMapping<dim>::StraightSimplexMapping()
+      : MappingFE<dim>(FE_SimplexP<dim>(1))
+  {}
+
+  template <int dim>
+  std::unique_ptr<Mapping<dim>>
+  StraightSimplexMapping<dim>::clone() const
+  {
+    return std::make_unique<StraightSimplexMapping<dim>>();
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  StraightSimplexMapping<dim>::compute_mapping_support_points(
+    const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    // FE_SimplexP(1)'s support points are the reference cell's vertices,
+    // in the cell's vertex order
+    std::vector<Point<dim>> points;
+    for (const unsigned int v : cell->vertex_indices())
+      points.push_back(cell->vertex(v));
+    return points;
+  }
+
+  namespace
+  {
+    /**
+     * The Gauss rule of the reference cell, capped on triangles and
+     * tetrahedra (a line is both a hypercube and a simplex: QGauss).
+     */
+    template <int q_dim>
+    Quadrature<q_dim>
+    gauss_rule(const ReferenceCell &cell, const unsigned int n)
+    {
+      return !cell.is_hyper_cube() ?
+               cell.get_gauss_type_quadrature<q_dim>(std::min(n, 4u)) :
+               cell.get_gauss_type_quadrature<q_dim>(n);
+    }
+  } // namespace
+
+  template <int dim>
+  Quadrature<dim>
+  cell_quadrature(const FiniteElement<dim> &fe, const unsigned int n)
+  {
+    return gauss_rule<dim>(fe.reference_cell(), n);
+  }
+
+  template <int dim>
+  Quadrature<dim - 1>
+  face_quadrature(const FiniteElement<dim> &fe, const unsigned int n)
+  {
+    // all faces of a triangle, a tetrahedron, a quadrilateral or a
+    // hexahedron are of one kind
+    return gauss_rule<dim - 1>(fe.reference_cell().face_reference_cell(0), n);
+  }
+
+  template <int dim>
+  CellKind
+  cell_kind(const Triangulation<dim> &triangulation)
+  {
+    for (const ReferenceCell &cell : triangulation.get_reference_cells())
+      if (!cell.is_hyper_cube())
+        return CellKind::simplex;
+    return CellKind::quadrilateral;
+  }
+
+  template std::unique_ptr<parallel::TriangulationBase<2>>
+    make_triangulation<2>(CellKind, MPI_Comm);
+  template std::unique_ptr<parallel::TriangulationBase<3>>
+    make_triangulation<3>(CellKind, MPI_Comm);
+  template std::unique_ptr<FiniteElement<2>>
+  make_element<2>(CellKind, unsigned int);
+  template std::unique_ptr<FiniteElement<3>>
+  make_element<3>(CellKind, unsigned int);
+  template std::unique_ptr<Mapping<2>>
+  make_mapping<2>(CellKind, unsigned int);
+  template std::unique_ptr<Mapping<3>>
+  make_mapping<3>(CellKind, unsigned int);
+  template class StraightSimplexMapping<2>;
+  template class StraightSimplexMapping<3>;
+  template Quadrature<2>
+  cell_quadrature(const FiniteElement<2> &, unsigned int);
+  template Quadrature<3>
+  cell_quadrature(const FiniteElement<3> &, unsigned int);
+  template Quadrature<1>
+  face_quadrature(const FiniteElement<2> &, unsigned int);
+  template Quadrature<2>
+  face_quadrature(const FiniteElement<3> &, unsigned int);
+  template CellKind
+  cell_kind(const Triangulation<2> &);
+  template CellKind
+  cell_kind(const Triangulation<3> &);
+} // namespace dualcontact
