@@ -346,7 +346,6 @@ namespace dualcontact
                                            length);
 
     // the obstacle is needed only with contact, but a plane is always
-    // there (its entries have defaults), so that gaps are defined
     // there (its entries have defaults), so that gaps are defined; its
     // translation U(t) is a function of the time alone
     std::string path;

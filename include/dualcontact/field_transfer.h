@@ -6,11 +6,12 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/grid/cell_id.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <deal.II/numerics/solution_transfer.h>
-
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -23,9 +24,13 @@ namespace dualcontact
    * interpolation, exact for a field of the coarse space since the meshes
    * are nested (doc/theory.md §7). On a p4est mesh each rank carries its own
    * cells (parallel::distributed::SolutionTransfer). On a replicated mesh
-   * of simplices every rank holds all cells: it carries the whole field
-   * (deal.II's serial SolutionTransfer on a copy of all entries) and keeps
-   * the entries it owns.
+   * of simplices every rank holds all cells: it keeps each cell's values of
+   * the whole field, prolongates them to the cell's children with the
+   * element's prolongation matrices, and keeps the entries it owns. (deal.II
+   * 9.4's serial SolutionTransfer asks that two cells give a shared DoF the
+   * same value to 1e5 times the machine epsilon relative to that value,
+   * which P2's prolongation misses by round-off where a component is near
+   * zero.)
    */
   template <int dim>
   class FieldTransfer
@@ -53,9 +58,9 @@ namespace dualcontact
     const DoFHandler<dim> &dof_handler;
     std::unique_ptr<parallel::distributed::
                       SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>
-                                                           distributed;
-    std::unique_ptr<SolutionTransfer<dim, Vector<double>>> replicated;
-    std::vector<Vector<double>>                            whole_fields;
+      distributed;
+    // the replicated mesh: each active cell's values of each field
+    std::map<CellId, std::vector<Vector<double>>> cell_values;
   };
 } // namespace dualcontact
 
