@@ -623,7 +623,16 @@ namespace dualcontact
         // simplices: their cells stay flat).
         triangulation.set_all_manifold_ids(simplex ? numbers::flat_manifold_id :
                                                      1);
-        triangulation.set_all_manifold_ids_on_boundary(0, 0);
+        if (simplex)
+          {
+            // by hand: deal.II 9.4's set_all_manifold_ids_on_boundary()
+            // asks a triangle for a fourth face
+            for (const auto &face : triangulation.active_face_iterators())
+              if (face->at_boundary() && face->boundary_id() == 0)
+                face->set_all_manifold_ids(0);
+          }
+        else
+          triangulation.set_all_manifold_ids_on_boundary(0, 0);
         triangulation.set_manifold(0, SphericalManifold<dim>(center));
         if (!simplex)
           {
