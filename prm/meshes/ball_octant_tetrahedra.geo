@@ -14,9 +14,9 @@ zc    = 1;
 // the mesh size: h_c within the distance d_c of the bottom point (Hertz's
 // contact radius is 0.1 R in prm/hertz_3d.prm's load), then growing by
 // `growth` per unit distance, at most h_far
-DefineConstant[ h_c = {0.015, Name "h_c"} ];
-DefineConstant[ d_c = {0.12, Name "d_c"} ];
-DefineConstant[ growth = {0.3, Name "growth"} ];
+DefineConstant[ h_c = {0.01, Name "h_c"} ];
+DefineConstant[ d_c = {0.11, Name "d_c"} ];
+DefineConstant[ growth = {1.0, Name "growth"} ];
 h_far = 0.25 * R;
 
 Sphere(1) = {0, 0, zc, R};

@@ -168,6 +168,35 @@ TEST_CASE("Hertz on triangles: the peak pressure within 1 % and the contact "
     }
 }
 
+TEST_CASE("Hertz on tetrahedra: the peak pressure within 3 % and the contact "
+          "radius within one contact element on fewer than 3e5 DoFs, on a "
+          "Gmsh octant of the ball",
+          "[simplex]")
+{
+  // prm/hertz_3d_tetrahedra.prm (a = 0.1, p0 = 69.948): 1011 nodes graded
+  // toward the contact, halved twice (152139 DoFs)
+  const SceneRun<3> run(
+    "hertz_3d_tetrahedra.prm",
+    "subsection Geometry\n  set Mesh file = " +
+      test_file("../prm/meshes/ball_octant_tetrahedra.msh") + "\nend\n");
+  const CycleResult &r       = run.last();
+  const double       p0      = 69.94756151337502;
+  const double       element = line_spacing(run, 0.1);
+  INFO(r.mesh.n_dofs << " DoFs, peak error " << r.zone.max_pressure / p0 - 1.
+                     << ", radius " << r.zone.edge_half_width
+                     << ", contact element " << element << ", L2 error "
+                     << r.zone.pressure_error);
+  CHECK(r.mesh.n_dofs <= 300000);
+  CHECK(std::abs(r.zone.max_pressure / p0 - 1.) <= 0.03);
+  CHECK(element > 0.);
+  CHECK(std::abs(r.zone.edge_half_width - 0.1) <= element);
+  CHECK(r.zone.pressure_error <= 0.03);
+  // the load on the quarter of the top, pi / 4 of its area: the faceted
+  // circle of the mesh's top has 5e-4 less
+  CHECK(r.zone.contact_force ==
+        Approx(0.46638811162460175 * numbers::PI / 4.).epsilon(1e-3));
+}
+
 TEST_CASE("Coulomb friction on triangles: hertz_friction's stick half-width "
           "within one contact element of Q1's on a mesh of as many contact "
           "nodes",
