@@ -52,32 +52,37 @@ namespace dualcontact
   make_mapping(const CellKind kind, const unsigned int degree)
   {
     if (kind == CellKind::simplex)
-      return std::make_unique<StraightSimplexMapping<dim>>();
+      return std::make_unique<SimplexMapping<dim>>(degree);
     return std::make_unique<MappingQ<dim>>(degree);
   }
 
   template <int dim>
-  StraightSimplexMapping<dim>::StraightSimplexMapping()
-      : MappingFE<dim>(FE_SimplexP<dim>(1))
+  SimplexMapping<dim>::SimplexMapping(const unsigned int degree)
+      : MappingFE<dim>(FE_SimplexP<dim>(std::min(degree, 2u)))
+      , degree(std::min(degree, 2u))
   {}
 
   template <int dim>
   std::unique_ptr<Mapping<dim>>
-  StraightSimplexMapping<dim>::clone() const
+  SimplexMapping<dim>::clone() const
   {
-    return std::make_unique<StraightSimplexMapping<dim>>();
+    return std::make_unique<SimplexMapping<dim>>(degree);
   }
 
   template <int dim>
   std::vector<Point<dim>>
-  StraightSimplexMapping<dim>::compute_mapping_support_points(
+  SimplexMapping<dim>::compute_mapping_support_points(
     const typename Triangulation<dim>::cell_iterator &cell) const
   {
     // FE_SimplexP(1)'s support points are the reference cell's vertices,
-    // in the cell's vertex order
+    // FE_SimplexP(2)'s the vertices and then the midpoints of the lines, in
+    // the cell's vertex and line order
     std::vector<Point<dim>> points;
     for (const unsigned int v : cell->vertex_indices())
       points.push_back(cell->vertex(v));
+    if (degree == 2)
+      for (const unsigned int l : cell->line_indices())
+        points.push_back(cell->line(l)->center(/*respect_manifold=*/true));
     return points;
   }
 
@@ -135,8 +140,8 @@ namespace dualcontact
   make_mapping<2>(CellKind, unsigned int);
   template std::unique_ptr<Mapping<3>>
   make_mapping<3>(CellKind, unsigned int);
-  template class StraightSimplexMapping<2>;
-  template class StraightSimplexMapping<3>;
+  template class SimplexMapping<2>;
+  template class SimplexMapping<3>;
   template Quadrature<2>
   cell_quadrature(const FiniteElement<2> &, unsigned int);
   template Quadrature<3>

@@ -77,8 +77,9 @@ namespace dualcontact
                    const typename Triangulation<dim>::cell_iterator &cell,
                    const unsigned int                                f)
     {
-      // a simplex is straight-sided: its face's centre on the mesh is the
-      // mean of the face's vertices
+      // a simplex's face centre on the mesh is the mean of the face's
+      // vertices at degree 1 and on the curve at degree 2
+      // (SimplexMapping): the chord's distance bounds both
       Point<dim> on_mesh = cell->face(f)->center();
       if (cell->reference_cell().is_hyper_cube())
         {

@@ -40,25 +40,29 @@ namespace dualcontact
 
   /**
    * MappingQ(degree), which follows curved boundaries at that order; on
-   * simplices StraightSimplexMapping, whatever the degree.
+   * simplices SimplexMapping(degree).
    */
   template <int dim>
   std::unique_ptr<Mapping<dim>>
   make_mapping(CellKind kind, unsigned int degree);
 
   /**
-   * The affine map of each simplex from its vertices. Refinement still puts
-   * new vertices on the manifolds of the triangulation (the circle of a
-   * half disc), so a curved boundary is its polygon of vertices at every
-   * degree. deal.II 9.4's MappingFE asks that all parts of a cell carry the
-   * cell's manifold id, which a cell with one face on a curve does not; its
-   * vertices are all this map needs.
+   * The map of each simplex by FE_SimplexP(k), k = 1 or 2 (higher degrees
+   * map as 2): at k = 1 the affine map from the vertices, at k = 2 the
+   * quadratic one through the vertices and the midpoints of the lines,
+   * each midpoint on its line's manifold, so that a P2 cell follows a
+   * curved boundary between its vertices (the circle of a half disc) as
+   * MappingQ(2) does, and the contact nodes in the middle of a face lie on
+   * the body's surface, not on the chord. deal.II 9.4's MappingFE places
+   * those points on the cell's manifold and asks that all parts of the
+   * cell carry its manifold id, which a cell with one face on a curve does
+   * not; the lines' own manifolds are what the map needs.
    */
   template <int dim>
-  class StraightSimplexMapping : public MappingFE<dim>
+  class SimplexMapping : public MappingFE<dim>
   {
   public:
-    StraightSimplexMapping();
+    explicit SimplexMapping(unsigned int degree);
 
     std::unique_ptr<Mapping<dim>>
     clone() const override;
@@ -67,6 +71,9 @@ namespace dualcontact
     std::vector<Point<dim>>
     compute_mapping_support_points(
       const typename Triangulation<dim>::cell_iterator &cell) const override;
+
+  private:
+    const unsigned int degree;
   };
 
   /**

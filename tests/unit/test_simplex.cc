@@ -142,13 +142,15 @@ TEST_CASE("Hertz on triangles: the peak pressure within 1 % and the contact "
 {
   // prm/hertz.prm (a = 0.1, p0 = 54.945): the built-in half disc, each of
   // its quadrilaterals into 8 triangles, the pre-refinement toward the
-  // plane; prm/mesh_hertz_triangles.prm: 368 graded triangles from Gmsh,
-  // 3 global refinements, one mesh
+  // plane, P1 on two meshes and P2 on the first; prm/mesh_hertz_triangles.prm:
+  // 368 graded triangles from Gmsh, 3 global refinements, one mesh
+  const std::string one_mesh =
+    "subsection Refinement\n  set Number of cycles = 1\nend\n";
   const std::vector<std::pair<std::string, std::string>> scenes = {
     {"hertz.prm", simplices(1)},
+    {"hertz.prm", simplices(2) + one_mesh},
     {"mesh_hertz_triangles.prm",
-     "subsection Refinement\n  set Number of cycles = 1\nend\n"
-     "subsection Geometry\n  set Mesh file = " +
+     one_mesh + "subsection Geometry\n  set Mesh file = " +
        test_file("../prm/meshes/half_disc_triangles.msh") + "\nend\n"}};
   for (const auto &[scene, overrides] : scenes)
     {
@@ -168,6 +170,12 @@ TEST_CASE("Hertz on triangles: the peak pressure within 1 % and the contact "
       CHECK(std::abs(r.zone.max_pressure / 54.94505494505495 - 1.) <= 0.01);
       CHECK(std::abs(r.zone.edge_half_width - 0.1) <= element);
       CHECK(r.zone.pressure_error <= 0.02);
+      // P2 with the quadratic map of its cells, the nodes in the middle of
+      // the contact faces on the circle: measured 0.0034 at 71662 DoFs (on
+      // hertz_adaptive's meshes, with those nodes on the chords, P2 had
+      // 1.8e-2 at 72098 DoFs, and 4.6e-3 with them on the circle)
+      if (run.parameters.discretization.degree == 2)
+        CHECK(r.zone.pressure_error <= 0.005);
     }
 }
 
