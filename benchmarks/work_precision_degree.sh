@@ -5,23 +5,39 @@
 # global and with contact refinement and nested iteration, on three scenes:
 # the frictionless Hertz cylinder, the same cylinder with Coulomb friction
 # (2D), and the rigid sphere pressed into a block (3D Hertz).
+# With CELLS="quadrilateral simplex" the same study by element shape: the
+# same scenes and error measures with FE_SimplexP(k) on triangles (k = 1, 2)
+# and tetrahedra (k = 1) beside FE_Q(k) on quadrilaterals and hexahedra,
+# plus the memory that the replicated mesh of simplices costs per rank.
 #
 #   bash benchmarks/work_precision_degree.sh
+#   CELLS="quadrilateral simplex" bash benchmarks/work_precision_degree.sh
+#                                 (or bash benchmarks/work_precision_shape.sh)
 #
-# Runs prm/<scene>.prm once per degree x strategy, with these entries
-# overridden:
+# Runs prm/<scene>.prm once per degree x cell shape x strategy, with these
+# entries overridden:
 #   Discretization/Polynomial degree = <k>,
 #   Refinement/Strategy = <strategy>, Refinement/Number of cycles = <cycles>,
 #   Refinement/Nested iteration = true,
 #   Output/Directory = a work folder, Output/Write vtu = false,
-#   Output/Print timing = true;
+#   Output/Print timing = true,
+#   Geometry/Cell type = simplex on simplices;
 # and Refinement/Initial global refinement = 3 for hertz_friction and = 1 for
 # indenter_sphere_3d (coarser than the scenes', so that every degree has two
-# meshes or more below MAX_DOFS).
+# meshes or more below MAX_DOFS). On tetrahedra the program refuses the
+# pre-refinement (no hanging nodes on them in deal.II 9.4): a 3D scene runs
+# there with Geometry/Pre-refinement steps = 0, indenter_sphere_3d with
+# Initial global refinement = 3 (uniform tetrahedra, h = 0.25 on the first
+# mesh against the contact radius 0.1).
+# Simplices are run with global refinement only (the program refuses the
+# adaptive strategies on them) and at k = 1, 2 in 2D and k = 1 in 3D (the
+# degrees it has there with a contact boundary); the page lists what is
+# left out.
 # The cycle counts are chosen per degree and dimension so that the last mesh
 # stays below MAX_DOFS (FE_Q(2) has about 2^d and FE_Q(3) about 3^d times the
-# DoFs of FE_Q(1) on one mesh); a run whose last mesh is larger is flagged on
-# the page.
+# DoFs of FE_Q(1) on one mesh; the built-in discs make 8 triangles of each
+# quadrilateral, 3.2 to 3.4 times Q1's DoFs at P1, hence one cycle fewer); a
+# run whose last mesh is larger is flagged on the page.
 #
 # Errors (each cycle):
 #   pressure_error        relative L2 error of the contact pressure on
@@ -39,11 +55,19 @@
 #   energy_error          sqrt(2 |J(u_h) - J_ref|), J the column
 #                         potential_energy (1/2 a(u,u) - f(u)), J_ref that of
 #                         the reference run's last cycle
-# The reference run of a scene is its contact run of the highest degree
-# (the finest solution of the study); its last cycle is the reference, so
-# its own errors there are zero and are not drawn or fitted.
+# The reference run of a scene is its contact run on quadrilaterals of the
+# highest degree (the finest solution of the study, the same for both
+# shapes); its last cycle is the reference, so its own errors there are zero
+# and are not drawn or fitted.
 #
-# Writes
+# Memory of the replicated mesh (CELLS with simplex): each scene of
+# MEMORY_SCENES as the study's k = 1 global run of each shape less its last
+# MEMORY_COARSER cycles, on each rank count of MEMORY_RANKS (--oversubscribe
+# beyond the cores): memory_mb of the last cycle (peak resident memory
+# summed over the ranks) per rank, per cell and per DoF, what each further
+# rank adds, and the run-size estimate of source/run_size.cc beside it.
+#
+# Writes (CELLS=quadrilateral)
 #   doc/results_degree.md                       tables, fits, answers, figures
 #   doc/figures/degree/data/<scene>_<strategy>_k<k>.csv
 #                                               cycles.csv of each run, with
@@ -54,24 +78,41 @@
 #   doc/figures/degree/<scene>_*.svg
 # doc/results_degree_discussion.md, if it exists, becomes the section
 # "## Discussion" of the page (so that the discussion survives re-runs).
+# With simplex in CELLS: doc/results_shape.md, doc/figures/shape/ (data/
+# with <scene>_<strategy>_k<k>.csv for quadrilaterals and
+# <scene>_<strategy>_p<k>.csv for simplices, work_precision_shape.gp, the
+# figures) and doc/results_shape_discussion.md as its discussion.
 #
 # Environment (all optional):
 #   DUALCONTACT   the program (default <repository>/build/dualcontact)
 #   SCENES        default "hertz_adaptive hertz_friction indenter_sphere_3d"
 #   DEGREES       default "1 2 3"
 #   STRATEGIES    default "global contact"
+#   CELLS         the cell shapes: quadrilateral (default; hexahedra in 3D),
+#                 simplex (triangles, tetrahedra), or both
 #   CYCLES_<STRATEGY>_<k>  cycles of one strategy and degree in 2D, e.g.
 #                 CYCLES_GLOBAL_3=2 (defaults: global 5, 4, 3 and contact 9,
 #                 7, 6 for k = 1, 2, 3); CYCLES_3D_<STRATEGY>_<k> in 3D
-#                 (defaults: global 4, 3, 2 and contact 6, 5, 4)
+#                 (defaults: global 4, 3, 2 and contact 6, 5, 4);
+#                 on simplices CYCLES_SIMPLEX_GLOBAL_<k> (defaults 4, 3 for
+#                 k = 1, 2) and CYCLES_SIMPLEX_3D_GLOBAL_1 (default 3)
 #   MAX_DOFS      the cap the cycle counts keep to (default 400000)
 #   NP            MPI ranks (default 2); MPIRUN_FLAGS extra mpirun options
 #   FIT_FROM      first cycle of the least-squares fits (default 1)
 #   EXTRA_PRM     further entries appended to every parameter file
+#   MEMORY_RANKS  rank counts of the memory runs (default "1 2 3"; empty:
+#                 no memory section); CELLS with simplex only
+#   MEMORY_SCENES scenes of the memory runs (default: the first 2D and the
+#                 first 3D scene of SCENES)
+#   MEMORY_COARSER cycles fewer than the study's k = 1 global run of each
+#                 shape that the memory runs make (default 1)
 #   WORK=<dir>    keep the runs' outputs (screen logs, cycles.csv,
 #                 contact_NN.csv) in <dir> instead of a temporary folder;
 #                 with REUSE=1 a run whose output is in <dir> is not run
-#                 again (the page is rebuilt from it)
+#                 again (the page is rebuilt from it). The quadrilateral runs
+#                 have the same names in both studies, so the shape study
+#                 in the degree study's WORK with REUSE=1 runs only the
+#                 simplices and the memory runs.
 # Paths written into doc/ are relative to the repository root. Needs bash,
 # awk, sort, mpirun; gnuplot for the figures (apt-get install gnuplot-nox).
 set -euo pipefail
@@ -94,6 +135,11 @@ for s in $strategies; do case "$s" in global|kelly|contact) ;; *) fail "unknown 
 for v in "$max_dofs" "$np" "$fit_from"; do
   case "$v" in ''|*[!0-9]*) fail "MAX_DOFS, NP and FIT_FROM must be non-negative integers, not '$v'" ;; esac
 done
+cells="${CELLS:-quadrilateral}"
+for c in $cells; do case "$c" in quadrilateral|simplex) ;; *) fail "CELLS holds quadrilateral and simplex only, not '$c'" ;; esac; done
+# the shape study: simplices in CELLS (its own page, figures and memory runs)
+shapes=0
+case " $cells " in *" simplex "*) shapes=1 ;; esac
 
 # the space dimension of a scene (Geometry/Dimension, 2 unless set)
 dim_of() {
@@ -101,12 +147,18 @@ dim_of() {
        g && /^[ \t]*set[ \t]+Dimension[ \t]*=/ { sub(/^[^=]*=[ \t]*/, ""); d = $1 }
        END { print (d == "") ? 2 : d }' "$repo/prm/$1.prm"
 }
-# cycles of one strategy, degree and dimension: CYCLES_<STRATEGY>_<k> (2D),
-# CYCLES_3D_<STRATEGY>_<k> (3D), or the default
+# cycles of one strategy, degree, dimension and cell shape (quadrilateral
+# unless $4 is simplex): CYCLES_[SIMPLEX_][3D_]<STRATEGY>_<k>, or the default
 cycles_of() {
-  local var n
-  if [ "$3" = 3 ]; then var="CYCLES_3D_${1^^}_$2"; else var="CYCLES_${1^^}_$2"; fi
+  local var n prefix=CYCLES_
+  if [ "${4:-quadrilateral}" = simplex ]; then prefix=CYCLES_SIMPLEX_; fi
+  if [ "$3" = 3 ]; then var="${prefix}3D_${1^^}_$2"; else var="${prefix}${1^^}_$2"; fi
   if [ -n "${!var:-}" ]; then n="${!var}"
+  # simplices: global refinement only; the discs' 8 triangles per
+  # quadrilateral give P1 3.2 to 3.4 times Q1's DoFs, one cycle fewer in 2D;
+  # the uniform tetrahedra of a 3D scene, 3 cycles from their own start
+  elif [ "${4:-quadrilateral}" = simplex ] && [ "$3" = 3 ]; then n=3
+  elif [ "${4:-quadrilateral}" = simplex ]; then n=$((5 - $2))
   elif [ "$3" = 3 ] && [ "$1" = global ]; then n=$((5 - $2))
   elif [ "$3" = 3 ]; then n=$((7 - $2))
   elif [ "$1" = global ]; then n=$((6 - $2))
@@ -115,22 +167,51 @@ cycles_of() {
   case "$n" in ''|*[!0-9]*|0) fail "$var must be a positive integer, not '$n'" ;; esac
   echo "$n"
 }
-# entries a scene gets beyond the common ones (listed on the page)
+# the value of Subsection/Entry ($2/$3) in the scene's file $1 ('' if unset)
+scene_value() {
+  awk -v sub_="$2" -v key="$3" '
+    $1 == "subsection" { line = $0; sub(/^[ \t]*subsection[ \t]+/, "", line); sub(/[ \t]+$/, "", line); inside = (line == sub_); next }
+    /^[ \t]*end[ \t]*$/ { inside = 0; next }
+    inside && $0 ~ "^[ \t]*set[ \t]+" key "[ \t]*=" { sub(/^[^=]*=[ \t]*/, ""); sub(/[ \t]+$/, ""); v = $0 }
+    END { print v }' "$repo/prm/$1.prm"
+}
+# entries a scene gets beyond the common ones (listed on the page), on the
+# cell shape $2 (quadrilateral unless simplex)
 scene_entries() {
-  case "$1" in
-    hertz_friction) printf 'subsection Refinement\n  set Initial global refinement = 3\nend\n' ;;
-    indenter_sphere_3d) printf 'subsection Refinement\n  set Initial global refinement = 1\nend\n' ;;
+  local igr="" pre=0
+  case "$1:${2:-quadrilateral}" in
+    hertz_friction:*) igr=3 ;;
+    indenter_sphere_3d:quadrilateral) igr=1 ;;
+    # no band of finer cells toward the sphere: start at h = 0.25
+    indenter_sphere_3d:simplex) igr=3 ;;
   esac
+  # tetrahedra have no hanging nodes in deal.II 9.4: the program refuses the
+  # pre-refinement on them
+  if [ "${2:-quadrilateral}" = simplex ] && [ "$(dim_of "$1")" = 3 ] &&
+     [ "$(scene_value "$1" Geometry 'Pre-refinement steps')" -gt 0 ] 2>/dev/null; then pre=1; fi
+  if [ "$pre" = 1 ]; then printf 'subsection Geometry\n  set Pre-refinement steps = 0\nend\n'; fi
+  if [ -n "$igr" ]; then printf 'subsection Refinement\n  set Initial global refinement = %s\nend\n' "$igr"; fi
+}
+# the highest degree of FE_SimplexP with a contact boundary in dimension $1
+simplex_max_degree() { if [ "$1" = 3 ]; then echo 1; else echo 2; fi; }
+# the run's name: <scene>_<strategy>_k<k> on quadrilaterals,
+# <scene>_<strategy>_p<k> on simplices
+run_name() {  # $1 scene, $2 cell shape, $3 strategy, $4 degree
+  if [ "$2" = simplex ]; then echo "${1}_${3}_p$4"; else echo "${1}_${3}_k$4"; fi
 }
 
 have_gnuplot=1
 command -v gnuplot > /dev/null 2>&1 || { have_gnuplot=0; say "gnuplot not found; the figures are skipped (apt-get install gnuplot-nox), the tables are still written" >&2; }
 
-figures_rel="figures/degree"
+if [ "$shapes" = 1 ]; then
+  figures_rel="figures/shape" page=results_shape gp_name=work_precision_shape.gp meta_name=meta_shape
+else
+  figures_rel="figures/degree" page=results_degree gp_name=work_precision_degree.gp meta_name=meta
+fi
 figures="$doc/$figures_rel"
 data="$figures/data"
-md="$doc/results_degree.md"
-discussion="results_degree_discussion.md"
+md="$doc/$page.md"
+discussion="${page}_discussion.md"
 mkdir -p "$data"
 
 if [ -n "${WORK:-}" ]; then
@@ -146,7 +227,7 @@ commit="$(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 if [ -n "$(git -C "$repo" status --porcelain --untracked-files=no -- source include CMakeLists.txt prm 2>/dev/null)" ]; then
   commit="$commit (with local changes to the code or the scenes)"
 fi
-meta="$work/meta"
+meta="$work/$meta_name"
 if [ "${REUSE:-0}" != 1 ] || [ ! -f "$meta" ]; then
   {
     echo "date_run=\"$(date -u '+%Y-%m-%d %H:%M UTC')\""
@@ -156,58 +237,137 @@ if [ "${REUSE:-0}" != 1 ] || [ ! -f "$meta" ]; then
   } > "$meta"
   start_all=$(date +%s)
 fi
-runs=""
+# Runs scene $2 with the overrides $work/$1.prm as run $1 on $3 ranks, its
+# output in $work/$1; stops the script if the run fails. With $5 = 1, more
+# ranks than cores are allowed (--oversubscribe).
+run_scene() {  # $1 run, $2 scene, $3 ranks, $4 cycles (for the message), $5
+  local set_args=() entry t0 status=0 flags="${MPIRUN_FLAGS:-}"
+  while IFS= read -r entry; do set_args+=(--set "$entry"); done < <(awk -f "$benchmarks/prm_overrides.awk" "$work/$1.prm")
+  if [ "${5:-0}" = 1 ] && [ "$3" -gt "$(nproc 2>/dev/null || echo 1)" ]; then
+    case "$flags" in *oversubscribe*) ;; *) flags="$flags --oversubscribe" ;; esac
+  fi
+  printf 'work_precision_degree: %-34s %2d cycles ... ' "$1" "$4"
+  t0=$(date +%s)
+  # shellcheck disable=SC2086
+  mpirun $flags -np "$3" "$bin" "$repo/prm/$2.prm" "${set_args[@]}" > "$work/$1.log" 2>&1 || status=$?
+  if [ "$status" -ne 0 ] || [ ! -s "$work/$1/cycles.csv" ]; then
+    echo "FAILED (exit status $status)"
+    tail -n 30 "$work/$1.log" >&2
+    exit 1
+  fi
+  echo "$(( $(date +%s) - t0 )) s, $(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+    { d = $c["dofs"]; e = $c["pressure_error"] } END { printf "last cycle %d DoFs, pressure error %.2e", d, e }' "$work/$1/cycles.csv")"
+}
+runs="" skipped="" n_ran=0
 for scene in $scenes; do
+  dim="$(dim_of "$scene")"
   for k in $degrees; do
-    for strategy in $strategies; do
-      run="${scene}_${strategy}_k$k"
-      runs="$runs $run"
-      out="$work/$run"
-      if [ "${REUSE:-0}" = 1 ] && [ -s "$out/cycles.csv" ]; then continue; fi
-      cycles="$(cycles_of "$strategy" "$k" "$(dim_of "$scene")")"
-      prm="$work/$run.prm"
-      {
-        echo "subsection Discretization"
-        echo "  set Polynomial degree = $k"
-        echo "end"
-        echo "subsection Refinement"
-        echo "  set Number of cycles = $cycles"
-        echo "  set Strategy         = $strategy"
-        echo "  set Nested iteration = true"
-        echo "end"
-        echo "subsection Output"
-        echo "  set Directory    = $out"
-        echo "  set Write vtu    = false"
-        echo "  set Print timing = true"
-        echo "end"
-        scene_entries "$scene"
-        if [ -n "${EXTRA_PRM:-}" ]; then printf '%s\n' "$EXTRA_PRM"; fi
-      } > "$prm"
-      set_args=()
-      while IFS= read -r entry; do set_args+=(--set "$entry"); done < <(awk -f "$benchmarks/prm_overrides.awk" "$prm")
-      printf 'work_precision_degree: %-34s %2d cycles ... ' "$run" "$cycles"
-      t0=$(date +%s); status=0
-      # shellcheck disable=SC2086
-      mpirun ${MPIRUN_FLAGS:-} -np "$np" "$bin" "$repo/prm/$scene.prm" "${set_args[@]}" > "$work/$run.log" 2>&1 || status=$?
-      if [ "$status" -ne 0 ] || [ ! -s "$out/cycles.csv" ]; then
-        echo "FAILED (exit status $status)"
-        tail -n 30 "$work/$run.log" >&2
-        exit 1
-      fi
-      echo "$(( $(date +%s) - t0 )) s, $(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
-        { d = $c["dofs"]; e = $c["pressure_error"] } END { printf "last cycle %d DoFs, pressure error %.2e", d, e }' "$out/cycles.csv")"
+    for cell in $cells; do
+      for strategy in $strategies; do
+        if [ "$cell" = simplex ]; then
+          # what the program refuses on simplices, left out with a note
+          if [ "$k" -gt "$(simplex_max_degree "$dim")" ]; then
+            skipped="$skipped $scene:$strategy:$k:degree"; continue
+          elif [ "$strategy" != global ]; then
+            skipped="$skipped $scene:$strategy:$k:strategy"; continue
+          fi
+        fi
+        run="$(run_name "$scene" "$cell" "$strategy" "$k")"
+        runs="$runs $run"
+        out="$work/$run"
+        if [ "${REUSE:-0}" = 1 ] && [ -s "$out/cycles.csv" ]; then continue; fi
+        cycles="$(cycles_of "$strategy" "$k" "$dim" "$cell")"
+        prm="$work/$run.prm"
+        {
+          if [ "$cell" = simplex ]; then
+            echo "subsection Geometry"
+            echo "  set Cell type = simplex"
+            echo "end"
+          fi
+          echo "subsection Discretization"
+          echo "  set Polynomial degree = $k"
+          echo "end"
+          echo "subsection Refinement"
+          echo "  set Number of cycles = $cycles"
+          echo "  set Strategy         = $strategy"
+          echo "  set Nested iteration = true"
+          echo "end"
+          echo "subsection Output"
+          echo "  set Directory    = $out"
+          echo "  set Write vtu    = false"
+          echo "  set Print timing = true"
+          echo "end"
+          scene_entries "$scene" "$cell"
+          if [ -n "${EXTRA_PRM:-}" ]; then printf '%s\n' "$EXTRA_PRM"; fi
+        } > "$prm"
+        run_scene "$run" "$scene" "$np" "$cycles"
+        n_ran=$((n_ran + 1))
+      done
     done
   done
 done
 runs="${runs# }"
+
+# ---- the memory runs: the replicated mesh of simplices per rank ----
+memory_ranks=""
+if [ "$shapes" = 1 ]; then
+  memory_ranks="${MEMORY_RANKS-1 2 3}"
+  memory_coarser="${MEMORY_COARSER:-1}"
+  for v in $memory_ranks; do
+    case "$v" in ''|*[!0-9]*|0) fail "MEMORY_RANKS must hold positive integers, not '$v'" ;; esac
+  done
+  case "$memory_coarser" in ''|*[!0-9]*) fail "MEMORY_COARSER must be a non-negative integer, not '$memory_coarser'" ;; esac
+  if [ -n "${MEMORY_SCENES:-}" ]; then
+    memory_scenes="$MEMORY_SCENES"
+    for s in $memory_scenes; do [ -f "$repo/prm/$s.prm" ] || fail "no parameter file 'prm/$s.prm' (MEMORY_SCENES)"; done
+  else
+    # the first 2D and the first 3D scene of the study
+    memory_scenes="$(for s in $scenes; do echo "$(dim_of "$s") $s"; done | awk '!seen[$1]++ { print $2 }' | tr '\n' ' ')"
+  fi
+fi
+memory_runs=""
+declare -A memory_of=()  # run: "scene cell ranks"
+if [ -n "$memory_ranks" ]; then
+  for scene in $memory_scenes; do
+    dim="$(dim_of "$scene")"
+    for cell in $cells; do
+      # the study's k = 1 global run of this shape, less its last
+      # MEMORY_COARSER cycles (a higher Initial global refinement would not
+      # give its meshes where the scene has a pre-refinement band: the band
+      # is refined after the global refinement)
+      cycles=$(( $(cycles_of global 1 "$dim" "$cell") - memory_coarser ))
+      [ "$cycles" -ge 1 ] || cycles=1
+      for n in $memory_ranks; do
+        run="memory_$(run_name "$scene" "$cell" global 1)_np$n"
+        memory_runs="$memory_runs $run"
+        memory_of[$run]="$scene $cell $n"
+        out="$work/$run"
+        if [ "${REUSE:-0}" = 1 ] && [ -s "$out/cycles.csv" ]; then continue; fi
+        {
+          if [ "$cell" = simplex ]; then printf 'subsection Geometry\n  set Cell type = simplex\nend\n'; fi
+          printf 'subsection Discretization\n  set Polynomial degree = 1\nend\n'
+          printf 'subsection Refinement\n  set Number of cycles = %s\n  set Strategy         = global\n  set Nested iteration = true\nend\n' "$cycles"
+          printf 'subsection Output\n  set Directory    = %s\n  set Write vtu    = false\n  set Print timing = true\nend\n' "$out"
+          scene_entries "$scene" "$cell"
+          if [ -n "${EXTRA_PRM:-}" ]; then printf '%s\n' "$EXTRA_PRM"; fi
+        } > "$work/$run.prm"
+        run_scene "$run" "$scene" "$n" "$cycles" 1
+        n_ran=$((n_ran + 1))
+      done
+    done
+  done
+fi
+memory_runs="${memory_runs# }"
+
 if [ -n "${start_all:-}" ]; then
   {
     echo "elapsed=$(( $(date +%s) - start_all ))"
     echo "load_after=\"$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')\""
+    echo "n_ran=$n_ran"
   } >> "$meta"
 fi
 # what the runs found out about the machine (the file written above)
-date_run='?' load_before='?' bin_date='?' load_after='' elapsed=''
+date_run='?' load_before='?' bin_date='?' load_after='' elapsed='' n_ran=''
 # shellcheck disable=SC1090
 . "$meta"
 say "runs done; building the page"
@@ -238,12 +398,16 @@ last_value() {
 # ---- the data: cycles.csv with the errors against the reference run ----
 declare -A ref_run=() primary=()
 for scene in $scenes; do
-  # the contact run of the highest degree, else the run with the most DoFs
+  # the contact run on quadrilaterals of the highest degree, else the
+  # quadrilateral run with the most DoFs, else the run with the most DoFs
   ref=""; best=0
   for run in $runs; do
     case "$run" in "${scene}"_*) ;; *) continue ;; esac
     d="$(last_value "$work/$run/cycles.csv" dofs)"
-    case "$run" in "${scene}_contact_k"*) d=$((d + 1000000000 * (1 + ${run##*_k}))) ;; esac
+    case "$run" in
+      "${scene}_contact_k"*) d=$((d + 1000000000 * (1 + ${run##*_k}))) ;;
+      *_k[0-9]*) d=$((d + 500000000)) ;;
+    esac
     if [ "$d" -gt "$best" ]; then best="$d"; ref="$run"; fi
   done
   ref_run[$scene]="$ref"
@@ -311,8 +475,26 @@ done
 
 
 # ---- figures ----
-gp="$figures/work_precision_degree.gp"
+gp="$figures/$gp_name"
 rm -f "$figures"/*.svg
+# the curves of a figure, in the order of the legend: degree, cell shape,
+# strategy, as run in 2D (in 3D some are not run; their styles stay unused)
+combos=()
+for k in $degrees; do
+  for cell in $cells; do
+    for strategy in $strategies; do
+      if [ "$cell" = simplex ] && { [ "$strategy" != global ] || [ "$k" -gt "$(simplex_max_degree 2)" ]; }; then continue; fi
+      combos+=("$cell $k $strategy")
+    done
+  done
+done
+# a run's label: "k = 1, global" on the degree page, "Q1, global" and
+# "P1, global" on the shape page
+run_label() {  # $1 cell shape, $2 degree, $3 strategy
+  if [ "$shapes" = 0 ]; then echo "k = $2, $3"
+  elif [ "$1" = simplex ]; then echo "P$2, $3"
+  else echo "Q$2, $3"; fi
+}
 measure_title() {
   case "$1" in
     pressure_error) echo "relative L2 error of the contact pressure against Hertz [-]" ;;
@@ -325,21 +507,27 @@ peak_column() {
   if [ -n "$(exact_entry "$1" 'Peak pressure')" ]; then echo peak_pressure_error; else echo peak_difference; fi
 }
 plot_scene() {  # $1 scene, $2 x column, $3 y column
-  local i=0 sep="plot" k strategy
-  for k in $degrees; do
-    for strategy in $strategies; do
-      i=$((i + 1))
-      printf '%s %s using "%s":(abs(column("%s")) > 0 ? abs(column("%s")) : NaN) with linespoints ls %d title "k = %s, %s"' \
-        "$sep" "'data/${1}_${strategy}_k$k.csv'" "$2" "$3" "$3" "$i" "$k" "$strategy"
-      sep=", \\"$'\n    '
-    done
+  local i=0 sep="plot" combo cell k strategy run
+  for combo in "${combos[@]}"; do
+    read -r cell k strategy <<< "$combo"
+    i=$((i + 1))
+    run="$(run_name "$1" "$cell" "$strategy" "$k")"
+    case " $runs " in *" $run "*) ;; *) continue ;; esac
+    printf '%s %s using "%s":(abs(column("%s")) > 0 ? abs(column("%s")) : NaN) with linespoints ls %d title "%s"' \
+      "$sep" "'data/$run.csv'" "$2" "$3" "$3" "$i" "$(run_label "$cell" "$k" "$strategy")"
+    sep=", \\"$'\n    '
   done
   printf '\n'
 }
 {
   echo "# Generated by benchmarks/work_precision_degree.sh on $date_run; run it in"
-  echo "# doc/$figures_rel:  gnuplot work_precision_degree.gp"
-  echo "# It reads data/<scene>_<strategy>_k<degree>.csv (cycles.csv of each run with"
+  echo "# doc/$figures_rel:  gnuplot $gp_name"
+  if [ "$shapes" = 1 ]; then
+    echo "# It reads data/<scene>_<strategy>_k<degree>.csv (quadrilaterals) and"
+    echo "# data/<scene>_<strategy>_p<degree>.csv (simplices), cycles.csv of each run with"
+  else
+    echo "# It reads data/<scene>_<strategy>_k<degree>.csv (cycles.csv of each run with"
+  fi
   echo "# pressure_difference, peak_difference and energy_error added). Zero errors"
   echo "# (the reference point) are not drawn."
   echo "set datafile separator ','"
@@ -350,15 +538,14 @@ plot_scene() {  # $1 scene, $2 x column, $3 y column
   echo "set grid xtics ytics mxtics mytics lc rgb '#dddddd'"
   echo "set key outside right top box opaque"
   # colour per degree; contact refinement solid with filled points, global
-  # dashed with open points
+  # dashed with open points; simplices dash-dotted with open triangles
   i=0
-  for k in $degrees; do
-    for strategy in $strategies; do
-      i=$((i + 1))
-      case "$k" in 1) colour='#1f5fbf' ;; 2) colour='#2a9d3a' ;; *) colour='#c8302c' ;; esac
-      case "$strategy" in global) dt=2; pt=6 ;; kelly) dt=3; pt=8 ;; *) dt=1; pt=7 ;; esac
-      echo "set style line $i lc rgb '$colour' lw 2 dt $dt pt $pt ps 1.2"
-    done
+  for combo in "${combos[@]}"; do
+    read -r cell k strategy <<< "$combo"
+    i=$((i + 1))
+    case "$k" in 1) colour='#1f5fbf' ;; 2) colour='#2a9d3a' ;; *) colour='#c8302c' ;; esac
+    case "$cell:$strategy" in simplex:*) dt=4; pt=8 ;; *:global) dt=2; pt=6 ;; *:kelly) dt=3; pt=8 ;; *) dt=1; pt=7 ;; esac
+    echo "set style line $i lc rgb '$colour' lw 2 dt $dt pt $pt ps 1.2"
   done
   for scene in $scenes; do
     m="${primary[$scene]}"
@@ -399,7 +586,7 @@ plot_scene() {  # $1 scene, $2 x column, $3 y column
 } > "$gp"
 figure_note=""
 if [ "$have_gnuplot" = 1 ]; then
-  if (cd "$figures" && gnuplot work_precision_degree.gp) > "$work/gnuplot.log" 2>&1; then
+  if (cd "$figures" && gnuplot "$gp_name") > "$work/gnuplot.log" 2>&1; then
     say "wrote the figures in $figures"
   else
     echo "work_precision_degree: gnuplot failed; the tables are written without figures:" >&2
@@ -408,12 +595,12 @@ if [ "$have_gnuplot" = 1 ]; then
     figure_note="(gnuplot failed on this run; no figures.)"
   fi
 else
-  figure_note="(gnuplot was not installed when this page was generated; run \`cd doc/$figures_rel && gnuplot work_precision_degree.gp\`.)"
+  figure_note="(gnuplot was not installed when this page was generated; run \`cd doc/$figures_rel && gnuplot $gp_name\`.)"
 fi
 
 # ---- the page ----
 invocation=""
-for v in SCENES DEGREES STRATEGIES MAX_DOFS NP FIT_FROM MPIRUN_FLAGS; do
+for v in CELLS SCENES DEGREES STRATEGIES MAX_DOFS NP FIT_FROM MEMORY_RANKS MEMORY_SCENES MEMORY_COARSER MPIRUN_FLAGS; do
   if [ -n "${!v:-}" ]; then
     case "${!v}" in *[[:space:]]*) invocation="$invocation$v=\"${!v}\" " ;; *) invocation="$invocation$v=${!v} " ;; esac
   fi
@@ -429,13 +616,290 @@ cycles_text() {
     printf '%s %s and ' "$s" "$(for k in $degrees; do printf '%s, ' "$(cycles_of "$s" "$k" "$1")"; done | sed 's/, $//')"
   done | sed 's/ and $//'
 }
+# the same for simplices: global refinement, at the degrees they are run at
+simplex_cycles_text() {
+  local k run_degrees=""
+  for k in $degrees; do
+    if [ "$k" -le "$(simplex_max_degree "$1")" ]; then run_degrees="$run_degrees $k"; fi
+  done
+  if [ -z "$run_degrees" ]; then printf 'none'; return; fi
+  printf 'global %s (k = %s)' "$(for k in $run_degrees; do printf '%s, ' "$(cycles_of global "$k" "$1" simplex)"; done | sed 's/, $//')" "$(commas "$run_degrees")"
+}
+# a list "1 2 3" as "1, 2, 3"
+commas() { echo "$*" | sed 's/^ *//; s/ *$//; s/  */, /g'; }
 cores="$(nproc 2>/dev/null || echo '?')"
 cpu="$(awk -F': *' '/^model name/ {print $2; exit}' /proc/cpuinfo 2>/dev/null || true)"
 n_runs=$(wc -w <<< "$runs")
+n_memory=$(wc -w <<< "$memory_runs")
+
+# the texts in which the shape page differs from the degree page
+if [ "$shapes" = 1 ]; then
+  case " $cells " in
+    *" quadrilateral "*)
+      title="Work and precision by element shape: simplices beside quadrilaterals"
+      ref_text="the contact-refinement run on
+  quadrilaterals of the highest degree (its last cycle; the same reference
+  for both shapes)" ;;
+    *)
+      title="Work and precision by element shape: simplices"
+      ref_text="the run with the most DoFs (no
+  quadrilateral runs on this page; its last cycle)" ;;
+  esac
+  if [ -n "$n_ran" ] && [ "$n_ran" != "$((n_runs + n_memory))" ]; then
+    run_time="Total run time of the $n_ran runs made (the others of the $n_runs runs and $n_memory memory runs reused from WORK): ${elapsed:-?} s."
+  else
+    run_time="Total run time of the $n_runs runs and the $n_memory memory runs: ${elapsed:-?} s."
+  fi
+  memory_text="
+  On simplices every rank holds the whole mesh: see the section on the
+  replicated mesh's memory at the end."
+  data_text="Data: \`doc/$figures_rel/data/<scene>_<strategy>_k<degree>.csv\` (quadrilaterals) and
+\`<scene>_<strategy>_p<degree>.csv\` (simplices), cycles.csv of each"
+  cheapest_title="Which element, degree and refinement reach 1 % and 0.1 % cheapest"
+  legend_text="Colour: degree (blue 1, green 2, red 3); quadrilaterals (Qk): solid lines and
+filled points contact refinement, dashed lines and open points global
+refinement; simplices (Pk): dash-dotted lines and open triangles, global
+refinement."
+else
+  title="Work and precision by polynomial degree"
+  run_time="Total run time of the $n_runs runs: ${elapsed:-?} s."
+  ref_text="the contact-refinement run of the
+  highest degree (its last cycle)"
+  memory_text=""
+  data_text="Data: \`doc/$figures_rel/data/<scene>_<strategy>_k<degree>.csv\` (cycles.csv of each"
+  cheapest_title="Which degree and refinement reach 1 % and 0.1 % cheapest"
+  legend_text="Colour: degree (blue k = 1, green k = 2, red k = 3); solid lines and filled
+points: contact refinement; dashed lines and open points: global refinement."
+fi
+# the paragraph on what is run
+study_text() {
+  if [ "$shapes" = 0 ]; then
+    cat <<EOF
+Each scene is run with FE_Q(k) and a mapping of degree k, k = $(commas "$degrees"), each with the
+refinement strategies $(commas "$strategies"), all with nested iteration (each mesh starts
+from the solution of the one before) and \`Write vtu = false\`. The cycle counts
+per degree keep the last mesh below MAX_DOFS = $max_dofs DoFs (FE_Q(2) has about 2^d and
+FE_Q(3) about 3^d times the DoFs of FE_Q(1) on one mesh in d dimensions); cycles for
+k = $(commas "$degrees"): $(cycles_text 2) in 2D; $(cycles_text 3) in 3D.
+EOF
+    return
+  fi
+  local with_quads=0 strategy_left="" degree_left_3="" p3_left="" item scene strategy k why
+  case " $cells " in *" quadrilateral "*) with_quads=1 ;; esac
+  echo "The element shapes side by side, on the scenes and with the error measures of"
+  if [ "$with_quads" = 1 ]; then
+    echo "[results_degree.md](results_degree.md): quadrilaterals (hexahedra in 3D) with"
+    echo "FE_Q(k) and a mapping of degree k (*Qk*), and triangles (tetrahedra in 3D) with"
+  else
+    echo "[results_degree.md](results_degree.md): triangles (tetrahedra in 3D) with"
+  fi
+  echo "FE_SimplexP(k) mapped at degree k (*Pk*, [simplices.md](simplices.md)): each"
+  echo "scene's built-in geometry made of simplices by \`Geometry/Cell type = simplex\`"
+  echo "(the rectangle: each box into 2 triangles or 5 tetrahedra; the discs: each"
+  echo "quadrilateral into 8 triangles, 3.2 to 3.4 times the DoFs of Q1 at P1 on the"
+  echo "same refinement level), on a \`parallel::shared\` mesh that every rank holds whole."
+  if [ "$with_quads" = 1 ]; then
+    echo "Degrees k = $(commas "$degrees"); the refinement strategies $(commas "$strategies") on"
+    echo "quadrilaterals, global refinement on simplices; all with nested iteration"
+  else
+    echo "Degrees k = $(commas "$degrees"), global refinement, nested iteration"
+  fi
+  echo "(each mesh starts from the previous mesh's solution) and \`Write vtu = false\`."
+  echo "The cycle counts keep the last mesh below MAX_DOFS = $max_dofs DoFs; cycles:"
+  if [ "$with_quads" = 1 ]; then
+    echo "quadrilaterals $(cycles_text 2) (k = $(commas "$degrees")) in 2D, $(cycles_text 3) in 3D;"
+  fi
+  echo "simplices $(simplex_cycles_text 2) in 2D, $(simplex_cycles_text 3) in 3D."
+  # what the program refuses on simplices, left out
+  for item in $skipped; do
+    IFS=: read -r scene strategy k why <<< "$item"
+    if [ "$why" = strategy ]; then
+      case " $strategy_left " in *" $strategy "*) ;; *) strategy_left="$strategy_left $strategy" ;; esac
+    elif [ "$k" -ge 3 ]; then
+      p3_left=1
+    else
+      degree_left_3=2
+    fi
+  done
+  if [ -n "$skipped" ]; then
+    echo
+    echo "Not run on simplices (the program refuses them, doc/simplices.md):"
+    echo
+    if [ -n "$strategy_left" ]; then
+      echo "- refinement $(commas "$strategy_left"): deal.II 9.4 has neither error estimators"
+      echo "  nor coarsening on simplices, so global refinement is the only strategy there."
+    fi
+    if [ -n "$p3_left" ]; then
+      echo "- k = 3: FE_SimplexP has degrees 1 and 2 only."
+    fi
+    if [ -n "$degree_left_3" ]; then
+      echo "- k = 2 on tetrahedra: P2's vertex functions integrate to zero on a triangle"
+      echo "  face, so the contact nodes at the vertices would get no weight m_s (with a"
+      echo "  contact boundary, tetrahedra have degree 1 only)."
+    fi
+  fi
+  return 0
+}
+
+# a constant of source/run_size.cc in bytes, "constexpr double <name> =
+# <a> * <b> ...;" ('' if it is not there)
+run_size_constant() {
+  awk -v name="$1" '$0 ~ "constexpr double[ \t]+" name "[ \t]*=" {
+      sub(/^[^=]*=/, ""); sub(/;.*/, ""); n = split($0, f, "*"); v = 1
+      for (i = 1; i <= n; ++i) v *= f[i] + 0
+      print v; exit }' "$repo/source/run_size.cc" 2>/dev/null || true
+}
+# The section on the memory of the replicated mesh: the memory runs' rows,
+# what each further rank adds, and the run-size estimate beside them.
+memory_section() {
+  local run scene cell n dim table="$work/memory.table"
+  echo
+  echo "## Memory of the replicated mesh"
+  echo
+  if [ -z "$memory_runs" ]; then
+    echo "Not measured on this page (MEMORY_RANKS is empty)."
+    return 0
+  fi
+  cat <<EOF
+Quadrilaterals and hexahedra are on a \`parallel::distributed\` mesh (p4est):
+each rank holds its own cells and a layer of ghost cells. Simplices are on a
+\`parallel::shared\` mesh: every rank holds the whole triangulation and the DoF
+indices of every cell, so that part of the memory is paid once per rank. Each
+scene below is run as the study's k = 1 global run of each shape less its last
+$memory_coarser cycle(s) (MEMORY_COARSER; the cycles listed), so that its last mesh, the
+largest, is one of the study's, on $(commas "$memory_ranks") MPI ranks (\`--oversubscribe\` beyond
+the $cores cores). The figures are those of the last cycle. *memory*: \`memory_mb\`,
+the peak resident memory (VmHWM) of each rank over the run, summed over the
+ranks, 1 MB = 2^20 bytes; *per rank* that over the ranks, *per cell* and *per
+DoF* that over the last mesh's cells and DoFs; *time*: \`time_total\`, all cycles. *estimate*: the run-size
+check's formula of \`source/run_size.cc\` with the run's own cells and DoFs:
+ranks x $(awk -v b="$(run_size_constant bytes_per_rank)" 'BEGIN { printf "%g", b / 1048576 }') MB + $(run_size_constant bytes_per_dof_2d) B (2D) or $(run_size_constant bytes_per_dof_3d) B (3D) per DoF, and on
+simplices + ranks x cells x $(run_size_constant bytes_per_replicated_cell_2d) B per triangle or $(run_size_constant bytes_per_replicated_cell_3d) B per tetrahedron.
+*added per rank*: the slope of a least-squares line of the memory against the
+rank count: what each further rank costs (the program's fixed cost per rank,
+and on simplices the replicated mesh). The replicated mesh per cell and rank is
+the simplices' slope less that of the quadrilaterals of the same scene (their
+fixed cost per rank and their ghost layers), over the simplices' cells (less
+the estimate's fixed cost per rank where no quadrilateral runs were made).
+EOF
+  : > "$table"
+  for run in $memory_runs; do
+    read -r scene cell n <<< "${memory_of[$run]}"
+    dim="$(dim_of "$scene")"
+    # the last cycle's figures, and the number of cycles the run made
+    echo "$scene $dim $cell $n $(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+      { v = $c["cells"] " " $c["dofs"] " " $c["memory_mb"] " " $c["time_total"] } END { print NR - 1, v }' "$work/$run/cycles.csv")" >> "$table"
+  done
+  awk -v per_rank="$(run_size_constant bytes_per_rank)" \
+      -v dof2="$(run_size_constant bytes_per_dof_2d)" -v dof3="$(run_size_constant bytes_per_dof_3d)" \
+      -v cell2="$(run_size_constant bytes_per_replicated_cell_2d)" -v cell3="$(run_size_constant bytes_per_replicated_cell_3d)" '
+    function shape(cell, dim) { return (cell == "simplex") ? (dim == 3 ? "tetrahedra" : "triangles") : (dim == 3 ? "hexahedra" : "quadrilaterals") }
+    function estimate(cell, dim, n, cells, dofs,    b) {
+      if (per_rank == "" || dof2 == "" || dof3 == "" || cell2 == "" || cell3 == "") return ""
+      b = n * per_rank + (dim == 3 ? dof3 : dof2) * dofs
+      if (cell == "simplex") b += n * cells * (dim == 3 ? cell3 : cell2)
+      return b / 1048576
+    }
+    {
+      sc = $1; key = $1 SUBSEP $3
+      if (!(sc in seen)) { seen[sc] = 1; scenes[++ns] = sc; dim[sc] = $2 }
+      if (!(key in nrow)) { kinds[sc, ++nk[sc]] = $3 }
+      r = ++nrow[key]
+      np[key, r] = $4; ncycles[key] = $5; cells[key, r] = $6; dofs[key, r] = $7; mem[key, r] = $8; t[key, r] = $9
+    }
+    # least squares memory = a + b ranks: the slope b [MB]
+    function slope(key,    i, n, sx, sy, sxx, sxy, d) {
+      n = sx = sy = sxx = sxy = 0
+      for (i = 1; i <= nrow[key]; ++i) { ++n; sx += np[key, i]; sy += mem[key, i]; sxx += np[key, i] ^ 2; sxy += np[key, i] * mem[key, i] }
+      d = n * sxx - sx * sx
+      return (n < 2 || d <= 0) ? "" : (n * sxy - sx * sy) / d
+    }
+    END {
+      for (s = 1; s <= ns; ++s) {
+        sc = scenes[s]; d = dim[sc]
+        print ""
+        printf "### %s\n\n", sc
+        print "| shape | cycles | ranks | cells | DoFs | memory [MB] | per rank [MB] | per cell [kB] | per DoF [kB] | estimate [MB] | time [s] |"
+        print "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+        for (j = 1; j <= nk[sc]; ++j) {
+          key = sc SUBSEP kinds[sc, j]
+          for (i = 1; i <= nrow[key]; ++i) {
+            e = estimate(kinds[sc, j], d, np[key, i], cells[key, i], dofs[key, i])
+            printf "| %s | %d | %d | %d | %d | %.0f | %.0f | %.2f | %.2f | %s | %.1f |\n", shape(kinds[sc, j], d), ncycles[key],
+              np[key, i], cells[key, i], dofs[key, i], mem[key, i], mem[key, i] / np[key, i],
+              1024 * mem[key, i] / cells[key, i], 1024 * mem[key, i] / dofs[key, i],
+              (e == "") ? "n/a" : sprintf("%.0f", e), t[key, i]
+          }
+        }
+        # the slopes; the quadrilaterals of the scene, if any, as the base
+        bq = ""
+        for (j = 1; j <= nk[sc]; ++j) if (kinds[sc, j] == "quadrilateral") bq = slope(sc SUBSEP "quadrilateral")
+        print ""
+        print "| shape | cells | per rank on " nlist(sc) " ranks [MB] | added per rank [MB] | replicated mesh per cell and rank [B] | source/run_size.cc assumes |"
+        print "|---|---:|---|---:|---:|---:|"
+        for (j = 1; j <= nk[sc]; ++j) {
+          kind = kinds[sc, j]; key = sc SUBSEP kind; b = slope(key); n = nrow[key]
+          pr = ""
+          for (i = 1; i <= n; ++i) pr = pr (i > 1 ? ", " : "") sprintf("%.0f", mem[key, i] / np[key, i])
+          repl = "n/a"; assumed = "n/a"; rb[kind] = ""
+          if (kind == "simplex") {
+            assumed = ((d == 3) ? cell3 : cell2) " B"
+            base = (bq != "") ? bq : ((per_rank != "") ? per_rank / 1048576 : "")
+            if (b != "" && base != "") { rb[kind] = (b - base) * 1048576 / cells[key, n]; repl = sprintf("%.0f", rb[kind]) }
+          } else if (per_rank != "") assumed = sprintf("%.0f MB per rank", per_rank / 1048576)
+          printf "| %s | %d | %s | %s | %s | %s |\n", shape(kind, d), cells[key, n], pr,
+            (b == "") ? "n/a" : sprintf("%.1f", b), repl, assumed
+          first[kind] = mem[key, 1] / np[key, 1]; last[kind] = mem[key, n] / np[key, n]
+          fn[kind] = np[key, 1]; ln[kind] = np[key, n]; slope_of[kind] = b; nc[kind] = cells[key, n]
+        }
+        print ""
+        for (j = 1; j <= nk[sc]; ++j) {
+          kind = kinds[sc, j]
+          if (fn[kind] == ln[kind]) continue
+          change = 100 * (last[kind] / first[kind] - 1)
+          printf "%s: per rank %.0f MB on %d rank%s, %.0f MB on %d (%s %.0f %%)", toupper(substr(shape(kind, d), 1, 1)) substr(shape(kind, d), 2),
+            first[kind], fn[kind], (fn[kind] == 1) ? "" : "s", last[kind], ln[kind], (change < 0) ? "falls by" : "grows by", (change < 0) ? -change : change
+          if (slope_of[kind] != "")
+            printf "; each further rank adds %.0f MB", slope_of[kind]
+          if (kind == "simplex" && rb[kind] != "") {
+            a = (d == 3) ? cell3 : cell2; cname = (d == 3) ? "tetrahedron" : "triangle"
+            if (rb[kind] <= 0)
+              printf ", no more than the fixed cost per rank: at %d cells the replicated mesh is not measurable (source/run_size.cc assumes %s B per %s)",
+                nc[kind], a, cname
+            else {
+              printf ", of which the replicated mesh is about %.0f B per %s and rank (%.0f MB for the %d cells), against the %s B per %s that source/run_size.cc assumes: ",
+                rb[kind], cname, rb[kind] * nc[kind] / 1048576, nc[kind], a, cname
+              if (a >= rb[kind]) printf "the constant is %.1f times the measurement, an upper bound", a / rb[kind]
+              else printf "the measurement is %.1f times the constant, which underestimates it", rb[kind] / a
+            }
+          } else if (kind != "simplex" && slope_of[kind] != "" && per_rank != "")
+            printf " (the estimate assumes %.0f MB per rank)", per_rank / 1048576
+          print "."
+          print ""
+        }
+        above = total = 0
+        for (j = 1; j <= nk[sc]; ++j) {
+          key = sc SUBSEP kinds[sc, j]
+          for (i = 1; i <= nrow[key]; ++i) {
+            e = estimate(kinds[sc, j], d, np[key, i], cells[key, i], dofs[key, i])
+            if (e == "") continue
+            ++total; if (e >= mem[key, i]) ++above
+          }
+        }
+        if (total > 0)
+          printf "The run-size estimate is at or above the measured memory in %d of the %d runs (it is meant to bound the peak, so that the check refuses only what cannot fit).\n", above, total
+      }
+    }
+    function nlist(sc,    j, key, i, out) {
+      key = sc SUBSEP kinds[sc, 1]; out = ""
+      for (i = 1; i <= nrow[key]; ++i) out = out (i > 1 ? ", " : "") np[key, i]
+      return out
+    }' "$table"
+}
 
 {
   cat <<EOF
-# Work and precision by polynomial degree
+# $title
 
 Generated by \`$invocation\` on $date_run
 (source tree at commit $commit; program \`$bin_shown\` built $bin_date).
@@ -444,22 +908,16 @@ Do not edit: re-run the script. The discussion at the end is kept in
 
 Machine: $cores cores${cpu:+ ($cpu)}; $np MPI ranks; the runs one after the other.
 Load average (1, 5, 15 min) just before the runs: $load_before; just after: ${load_after:-?}
-(other work on the machine inflates the wall times). Total run time of the $n_runs runs: ${elapsed:-?} s.
+(other work on the machine inflates the wall times). $run_time
 
-Each scene is run with FE_Q(k) and a mapping of degree k, k = $(echo $degrees | sed 's/ /, /g'), each with the
-refinement strategies $(echo $strategies | sed 's/ /, /g'), all with nested iteration (each mesh starts
-from the solution of the one before) and \`Write vtu = false\`. The cycle counts
-per degree keep the last mesh below MAX_DOFS = $max_dofs DoFs (FE_Q(2) has about 2^d and
-FE_Q(3) about 3^d times the DoFs of FE_Q(1) on one mesh in d dimensions); cycles for
-k = $(echo $degrees | sed 's/ /, /g'): $(cycles_text 2) in 2D; $(cycles_text 3) in 3D.
+$(study_text)
 
 What is measured, per cycle:
 
 - *pressure error*: the relative L2 error of the contact pressure on Gamma_C
   against Hertz's (column \`pressure_error\` of cycles.csv);
 - *pressure difference*: the relative L2 difference of the pressure from
-  that of the scene's *reference run*, the contact-refinement run of the
-  highest degree (its last cycle): the nodal pressures l1 of both
+  that of the scene's *reference run*, $ref_text: the nodal pressures l1 of both
   (contact_NN.csv) joined by straight lines along the tangential
   coordinate s, the square of their difference integrated exactly between
   the merged nodes. Where Hertz's frictionless pressure is not the answer
@@ -487,11 +945,11 @@ What is measured, per cycle:
   this one (the cost of this cycle's accuracy from scratch); *CG / Newton*:
   \`linear_iterations / newton_steps\` of the cycle; *memory*: \`memory_mb\`,
   the peak resident memory of all ranks, and that per DoF (it includes the
-  fixed cost of the program and its libraries, so it falls with the size).
+  fixed cost of the program and its libraries, so it falls with the size).$memory_text
 
-Data: \`doc/$figures_rel/data/<scene>_<strategy>_k<degree>.csv\` (cycles.csv of each
+$data_text
 run, with the columns \`pressure_difference\`, \`peak_difference\` and
-\`energy_error\` added); figures: \`cd doc/$figures_rel && gnuplot work_precision_degree.gp\`.
+\`energy_error\` added); figures: \`cd doc/$figures_rel && gnuplot $gp_name\`.
 EOF
 
   for scene in $scenes; do
@@ -517,14 +975,26 @@ EOF
       echo "*pressure error* against Hertz, as the scene's exact solution."
     fi
     [ -n "$extra" ] && echo "Entry set for this study beyond the common ones: $extra."
+    if [ "$shapes" = 1 ]; then
+      # the simplices' entries beyond the common ones
+      extra="$( { printf 'subsection Geometry\n  set Cell type = simplex\nend\n'; scene_entries "$scene" simplex; } | awk '/^subsection/ { s = $2 } /set/ { sub(/^[ \t]*set[ \t]+/, ""); printf "%s<%s/%s>", sep, s, $0; sep = ", " }' | sed 's/ *= */ = /')"
+      echo "On simplices: $extra."
+      if scene_entries "$scene" simplex | grep -q 'Pre-refinement steps = 0'; then
+        echo "The program refuses the scene's pre-refinement on tetrahedra (deal.II 9.4 has"
+        echo "no hanging nodes on them; with it the run stops with exit status 6: \"The mesh"
+        echo "is made of tetrahedra ..., and deal.II 9.4 has no hanging nodes on tetrahedra,"
+        echo "which <Geometry/Pre-refinement steps> would make\"), so the tetrahedra are"
+        echo "uniform where the hexahedra have a graded band toward the contact zone: the"
+        echo "comparison of the shapes here includes that grading."
+      fi
+    fi
     echo "Reference run: \`${ref_run[$scene]}\`, last cycle, J_ref = $j_ref."
     echo
     echo "### Figures"
     echo
     if [ "$have_gnuplot" = 1 ]; then
       cat <<EOF
-Colour: degree (blue k = 1, green k = 2, red k = 3); solid lines and filled
-points: contact refinement; dashed lines and open points: global refinement.
+$legend_text
 
 ![$scene pressure vs DoFs]($figures_rel/${scene}_pressure_vs_dofs.svg)
 
@@ -539,7 +1009,8 @@ EOF
     else
       echo "$figure_note"
     fi
-    awk -F, -v fit_from="$fit_from" -v primary="$m" -v peakcol="$pk" -v max_dofs="$max_dofs" -v dim="$(dim_of "$scene")" '
+    awk -F, -v fit_from="$fit_from" -v primary="$m" -v peakcol="$pk" -v max_dofs="$max_dofs" -v dim="$(dim_of "$scene")" \
+        -v shapes="$shapes" -v cheapest_title="$cheapest_title" '
       # least squares ln|y| = c + b ln x over the cycles >= fit_from; a run
       # with fewer than two such cycles is fitted from cycle 0 (fit_all = 1)
       function fit(r, xcol, ycol) {
@@ -569,13 +1040,15 @@ EOF
       function a(x) { return x < 0 ? -x : x }
       function err(x) { return (x == "na") ? "n/a" : (x == 0) ? "ref." : sprintf("%.2e", a(x)) }
       function serr(x) { return (x == "na") ? "n/a" : sprintf("%+.2e", x) }
-      function name(r) { return "k = " deg[r] ", " strat[r] }
+      function name(r) { return shapes ? (simplex[r] ? "P" : "Q") deg[r] ", " strat[r] : "k = " deg[r] ", " strat[r] }
       BEGIN { width = (dim == 3) ? "radius" : "half-width" }
       FNR == 1 {
         f = FILENAME; sub(/.*\//, "", f); sub(/\.csv$/, "", f)
         r = ++nrun
-        deg[r] = f; sub(/.*_k/, "", deg[r])
-        strat[r] = f; sub(/_k[0-9]+$/, "", strat[r]); sub(/.*_/, "", strat[r])
+        # <scene>_<strategy>_k<k> (quadrilaterals), _p<k> (simplices)
+        simplex[r] = (f ~ /_p[0-9]+$/)
+        deg[r] = f; sub(/.*_[kp]/, "", deg[r])
+        strat[r] = f; sub(/_[kp][0-9]+$/, "", strat[r]); sub(/.*_/, "", strat[r])
         delete c
         for (i = 1; i <= NF; ++i) c[$i] = i
         next
@@ -647,7 +1120,7 @@ EOF
         }
 
         print ""
-        print "### Which degree and refinement reach 1 % and 0.1 % cheapest"
+        print "### " cheapest_title
         print ""
         printf "Error measure: the %s. For each run the first cycle at or below\n", (primary == "pressure_error") ? "pressure error against Hertz" : "pressure difference from the reference run"
         printf "the target, with its DoFs and cumulative wall time; where no cycle reaches it, the\n"
@@ -696,6 +1169,8 @@ EOF
         }
       }' "${files[@]}"
   done
+
+  if [ "$shapes" = 1 ]; then memory_section; fi
 
   echo
   echo "## Discussion"
