@@ -521,7 +521,7 @@ TEST_CASE("A traction, a displacement or a body force with the wrong number "
     "subsection Geometry\n  set Dimension = 3\nend\n"
     "subsection Boundary conditions\n  set Conditions = 4: contact, 5: "
     "traction, 1: fixed\n";
-  for (const std::string &tractions : {"5: 0; 0", "5: 0", "5: 0; -1"})
+  for (const std::string tractions : {"5: 0; 0", "5: 0", "5: 0; -1"})
     {
       const CaughtError error =
         error_3d(box_3d + "  set Tractions = " + tractions + "\nend\n");
