@@ -33,6 +33,24 @@ namespace
            std::to_string(degree) + "\nend\n";
   }
 
+  /**
+   * The largest spacing of the contact nodes with |s| < within (2D), all
+   * ranks': the contact element there.
+   */
+  double
+  largest_spacing(const Run &run, const double within)
+  {
+    const auto nodes   = run.pressures();
+    double     element = 0.;
+    for (std::size_t i = 1; i < nodes.size(); ++i)
+      if (std::abs(nodes[i].first) < within)
+        element = std::max(element, nodes[i].first - nodes[i - 1].first);
+    return element;
+  }
+
+  const std::string one_mesh =
+    "subsection Refinement\n  set Number of cycles = 1\nend\n";
+
   // prm/patch.prm (E = 1000, nu = 0, the block [0, 2] x [0, 1] on the
   // plane y = 0, the pressure 1 on its top): u = (0, -1e-3 y)
   const std::string frictionless_2d =
@@ -144,8 +162,6 @@ TEST_CASE("Hertz on triangles: the peak pressure within 1 % and the contact "
   // its quadrilaterals into 8 triangles, the pre-refinement toward the
   // plane, P1 on two meshes and P2 on the first; prm/mesh_hertz_triangles.prm:
   // 368 graded triangles from Gmsh, 3 global refinements, one mesh
-  const std::string one_mesh =
-    "subsection Refinement\n  set Number of cycles = 1\nend\n";
   const std::vector<std::pair<std::string, std::string>> scenes = {
     {"hertz.prm", simplices(1)},
     {"hertz.prm", simplices(2) + one_mesh},
@@ -156,12 +172,8 @@ TEST_CASE("Hertz on triangles: the peak pressure within 1 % and the contact "
     {
       const Run          run(scene, overrides);
       const CycleResult &r = run.last();
-      // the largest spacing of the contact nodes within 2 a of the centre
-      const auto nodes   = run.pressures();
-      double     element = 0.;
-      for (std::size_t i = 1; i < nodes.size(); ++i)
-        if (std::abs(nodes[i].first) < 0.2)
-          element = std::max(element, nodes[i].first - nodes[i - 1].first);
+      // the contact element within 2 a of the centre
+      const double element = largest_spacing(run, 0.2);
       INFO(scene << ": " << r.mesh.n_dofs << " DoFs, peak error "
                  << r.zone.max_pressure / 54.94505494505495 - 1.
                  << ", half-width " << r.zone.edge_half_width
@@ -216,16 +228,10 @@ TEST_CASE("Coulomb friction on triangles: hertz_friction's stick half-width "
   // Q1 on its second mesh (361 contact nodes, 19538 DoFs), P1 triangles
   // on their first (355 nodes, 18158 DoFs)
   const Run          quadrilaterals("hertz_friction.prm", "");
-  const Run          triangles("hertz_friction.prm",
-                      simplices(1) + "subsection Refinement\n  set Number of "
-                                              "cycles = 1\nend\n");
+  const Run          triangles("hertz_friction.prm", simplices(1) + one_mesh);
   const CycleResult &q       = quadrilaterals.last();
   const CycleResult &t       = triangles.last();
-  const auto         nodes   = triangles.pressures();
-  double             element = 0.;
-  for (std::size_t i = 1; i < nodes.size(); ++i)
-    if (std::abs(nodes[i].first) < 0.1)
-      element = std::max(element, nodes[i].first - nodes[i - 1].first);
+  const double       element = largest_spacing(triangles, 0.1);
   INFO("stick half-width: Q1 "
        << q.zone.stick_half_width << " (" << q.solve.n_contact_nodes
        << " nodes), P1 " << t.zone.stick_half_width << " ("
