@@ -1,0 +1,78 @@
+// The dual mortar coupling of two surfaces in 2D: the slave surface carries
+// the contact nodes and their multipliers, the master surface is the
+// other body. With piecewise-linear traces on both, and on each slave
+// segment the dual basis psi_s biorthogonal to the slave's own basis,
+//   int psi_s phi_t = delta_st m_s,   m_s = int phi_s,
+// the weighted gap and the slip of slave node s read
+//   n_s . (u_s - sum_j c_sj u_j) + g0_s,   c_sj = M_sj / m_s,
+//   M_sj = int_{slave} psi_s phi_j^master,
+// so that the slave block of the coupling is the lumped weight m_s the
+// rigid obstacle already uses, and only the master columns c_sj are new.
+// Each M_sj is integrated exactly over the segments where a slave and a
+// master segment overlap (the master's end points projected onto the
+// slave segment along its normal): the exactness on non-matching meshes is
+// what makes a uniform pressure pass across the interface (the contact
+// patch test). No mesh, no MPI: numbers and points only.
+#ifndef dualcontact_mortar_h
+#define dualcontact_mortar_h
+
+#include <deal.II/base/point.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace dualcontact
+{
+  using namespace dealii;
+
+  namespace mortar
+  {
+    /**
+     * A straight segment of a surface in 2D with a linear trace: its end
+     * points and the numbers the caller gives their nodes (on one surface,
+     * 0 to the number of its nodes - 1).
+     */
+    struct Segment
+    {
+      std::array<Point<2>, 2>     x;
+      std::array<unsigned int, 2> node;
+    };
+
+    /**
+     * The coupling of the slave surface's nodes with the master's: for
+     * each slave node s its weight m_s = int phi_s over the slave segments
+     * and the entries M_sj of the master nodes j its dual function sees.
+     */
+    struct Coupling
+    {
+      std::vector<double>                                       weight;
+      std::vector<std::vector<std::pair<unsigned int, double>>> master;
+
+      /**
+       * sum_j M_sj / m_s: 1 where the master covers the support of psi_s
+       * (the master's functions sum to one), less at a slave node beyond
+       * the master's end, 0 where no master segment faces the node.
+       */
+      double
+      coverage(unsigned int s) const;
+    };
+
+    /**
+     * m_s and M_sj for the slave segments against the master segments.
+     * Each master segment is projected onto the line of each slave segment
+     * along the slave segment's normal; where the projections overlap,
+     * psi_s phi_j is a quadratic polynomial of the slave coordinate,
+     * integrated exactly by two Gauss points. A master segment that
+     * projects onto a point (it stands at a right angle to the slave) adds
+     * nothing. The search is over all pairs (for the surfaces of a test or
+     * of a 2D interface; a bounding-box tree replaces it for large ones).
+     */
+    Coupling
+    couple(const std::vector<Segment> &slave,
+           unsigned int                n_slave_nodes,
+           const std::vector<Segment> &master);
+  } // namespace mortar
+} // namespace dualcontact
+
+#endif
