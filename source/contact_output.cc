@@ -35,6 +35,8 @@ namespace dualcontact
     constexpr unsigned int stride = 3 * dim + 5;
     std::vector<double>    local;
     local.reserve(stride * contact_set.n_local_nodes());
+    const TrilinosWrappers::MPI::Vector &u =
+      contact_set.with_masters(displacement);
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const ContactNode<dim> &node = contact_set.nodes[s];
@@ -48,8 +50,7 @@ namespace dualcontact
         for (unsigned int d = 0; d < dim; ++d)
           local.push_back(l2[d]);
         local.push_back(contact_set.threshold[s]);
-        local.push_back(node.gap0 -
-                        contact_set.normal_displacement(displacement, s));
+        local.push_back(node.gap0 - contact_set.normal_displacement(u, s));
         for (unsigned int d = 0; d < dim; ++d)
           local.push_back(node.normal[d]);
         local.push_back(contact_set.status(s));
@@ -177,7 +178,9 @@ namespace dualcontact
     std::vector<TrilinosWrappers::MPI::Vector> packed(n_slots);
     for (auto &slot : packed)
       slot.reinit(owned, comm);
-    std::vector<double> values(n_packed);
+    std::vector<double>                  values(n_packed);
+    const TrilinosWrappers::MPI::Vector &u =
+      contact_set.with_masters(displacement);
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const ContactNode<dim> &node = contact_set.nodes[s];
@@ -185,10 +188,9 @@ namespace dualcontact
         values[q++]                  = contact_set.l1[s];
         if (friction)
           values[q++] = contact_set.threshold[s];
-        values[q++] =
-          node.gap0 - contact_set.normal_displacement(displacement, s);
-        values[q++]                 = contact_set.status(s) + 1.;
-        const Tensor<1, dim - 1> vt = contact_set.slip(displacement, s);
+        values[q++] = node.gap0 - contact_set.normal_displacement(u, s);
+        values[q++] = contact_set.status(s) + 1.;
+        const Tensor<1, dim - 1> vt = contact_set.slip(u, s);
         Tensor<1, dim>           slip, traction;
         for (unsigned int k = 0; k < dim - 1; ++k)
           {

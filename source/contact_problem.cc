@@ -300,6 +300,21 @@ namespace dualcontact
                 << std::endl;
     scene.check_rigid_motions(triangulation);
     check_initial_position(triangulation, scene);
+    // every cell has a material: once <Material/Materials by id> lists
+    // some, a cell of an id it does not name (and not 0) is bad input
+    types::material_id missing = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          !parameters.material.has(cell->material_id()))
+        missing = std::max<types::material_id>(missing, cell->material_id());
+    missing = Utilities::MPI::max(missing, mpi_communicator);
+    if (missing > 0)
+      throw InputError("The mesh has cells of material id " +
+                         std::to_string(missing) +
+                         ", which <Material/Materials by id> does not list "
+                         "(id 0 takes <Material/Young's modulus> and "
+                         "<Poisson's ratio>): give it its 'E, nu'.",
+                       exit_inconsistent);
     // a probe outside the body is bad input: found before the first solve
     probes.check_inside(mapping, triangulation);
   }
@@ -320,15 +335,34 @@ namespace dualcontact
 
     make_constraints();
 
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    // the contact nodes, their weights and gaps (doc/theory.md §4), and on
+    // a pair of bodies their master nodes (doc/two_bodies.md)
+    if (scene.effects().contact)
+      {
+        contact_set.setup(
+          mapping, dof_handler, hanging_node_constraints, constraints, scene);
+        AssertThrow(contact_set.n_global_nodes() > 0,
+                    ExcMessage("The contact boundary has no contact nodes."));
+      }
+
+    // The elements' couplings, and on a pair those of each slave node with
+    // its master nodes, rows of other ranks included: the Newton matrix
+    // adds its contact terms there (newton_solver.cc).
+    const bool pairs = scene.effects().contact && contact_set.has_pairs();
+    IndexSet   rows  = locally_relevant_dofs;
+    if (pairs)
+      rows.add_indices(contact_set.coupled_rows(constraints));
+    DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler,
                                     dsp,
                                     constraints,
                                     /*keep_constrained_dofs=*/false);
+    if (pairs)
+      contact_set.add_pair_couplings(dsp, constraints);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned_dofs,
                                                mpi_communicator,
-                                               locally_relevant_dofs);
+                                               rows);
     system_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,
@@ -339,15 +373,6 @@ namespace dualcontact
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
-
-    // the contact nodes, their weights and gaps (doc/theory.md §4)
-    if (scene.effects().contact)
-      {
-        contact_set.setup(
-          mapping, dof_handler, hanging_node_constraints, constraints, scene);
-        AssertThrow(contact_set.n_global_nodes() > 0,
-                    ExcMessage("The contact boundary has no contact nodes."));
-      }
     return {cycle, triangulation.n_global_active_cells(), dof_handler.n_dofs()};
   }
 
@@ -464,7 +489,9 @@ namespace dualcontact
         // (doc/theory.md §3.2), so their matrix is K = A + chi M. chi is
         // relative to E / L^2 so that the scene's units do not matter
         // (doc/theory.md §5).
-        chi = parameters.solver.proximal * parameters.material.youngs_modulus /
+        // (of the stiffest body where there are several materials)
+        chi = parameters.solver.proximal *
+              parameters.material.stiffest().youngs_modulus /
               std::pow(scene.characteristic_length(), 2);
         mass.add_to(system_matrix, chi);
       }
@@ -543,8 +570,7 @@ namespace dualcontact
       parameters.solver.tangential_augmentation > 0. ?
         parameters.solver.tangential_augmentation :
         (dim == 2 ? 1. : 0.25) * parameters.solver.augmentation;
-    const double modulus =
-      parameters.material.lambda() + 2. * parameters.material.mu();
+    const double modulus     = parameters.material.stiffest().p_wave_modulus();
     const double h_C         = contact_set.min_face_diameter();
     r                        = parameters.solver.augmentation * modulus / h_C;
     r_t                      = r_t_rel * modulus / h_C;
@@ -693,7 +719,7 @@ namespace dualcontact
       return indicator;
     indicator_valid = true;
     const std::set<types::boundary_id> contact_ids =
-      scene.effects().contact ? scene.ids_with(BoundaryCondition::contact) :
+      scene.effects().contact ? scene.contact_ids() :
                                 std::set<types::boundary_id>();
     indicator =
       compute_indicator<dim>({mapping,

@@ -44,11 +44,21 @@ namespace dualcontact
     TimerOutput::Scope    t(computing_timer, "measure contact zone");
     ContactZoneRecord     record;
     double                peak = 0;
-    Tensor<1, dim>        on_obstacle;
+    Tensor<1, dim>        on_obstacle, on_slave, on_master;
     std::vector<ZoneNode> local;
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
-        on_obstacle += contact_set.nodal_force(s);
+        // a pair's node pushes the master body, which pushes it back: a
+        // force inside the mesh, no load on it
+        const Tensor<1, dim> force = contact_set.nodal_force(s);
+        if (contact_set.nodes[s].masters.empty())
+          on_obstacle += force;
+        else
+          {
+            on_slave -= force;
+            for (const MasterTerm<dim> &master : contact_set.nodes[s].masters)
+              on_master += master.coefficient * force;
+          }
         peak = std::max(peak, contact_set.l1[s]);
         ZoneNode node;
         for (unsigned int k = 0; k < dim - 1; ++k)
@@ -60,18 +70,25 @@ namespace dualcontact
         local.push_back(node);
       }
     for (unsigned int c = 0; c < dim; ++c)
-      on_obstacle[c] = Utilities::MPI::sum(on_obstacle[c], mpi_communicator);
+      {
+        on_obstacle[c] = Utilities::MPI::sum(on_obstacle[c], mpi_communicator);
+        on_slave[c]    = Utilities::MPI::sum(on_slave[c], mpi_communicator);
+        on_master[c]   = Utilities::MPI::sum(on_master[c], mpi_communicator);
+        record.on_slave_body[c]  = on_slave[c];
+        record.on_master_body[c] = on_master[c];
+      }
     // the contact force is the resultant's component along Gamma_C's mean
     // direction, the direction of the applied load it balances: a sum of
     // the pressures m_s l1_s would also count the parts of the normals that
     // cancel (a curved zone), or that point elsewhere (a node beside an
     // obstacle's corner)
-    record.contact_force = on_obstacle * contact_set.normal;
+    record.contact_force = (on_obstacle + on_master) * contact_set.normal;
     // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s),
     // and its part in the tangent plane of Gamma_C's mean direction
-    const Tensor<1, dim> resultant = -on_obstacle;
+    const Tensor<1, dim> resultant   = -on_obstacle;
+    const Tensor<1, dim> transmitted = -on_obstacle + on_slave;
     record.tangential_force =
-      (resultant - (resultant * contact_set.normal) * contact_set.normal)
+      (transmitted - (transmitted * contact_set.normal) * contact_set.normal)
         .norm();
     record.max_pressure = Utilities::MPI::max(peak, mpi_communicator);
     for (unsigned int c = 0; c < dim; ++c)
@@ -98,12 +115,8 @@ namespace dualcontact
       {
         TrilinosWrappers::MPI::Vector multipliers, threshold;
         multiplier_fields(multipliers, threshold);
-        record.pressure_error =
-          compute_pressure_error(mapping,
-                                 dof_handler,
-                                 multipliers,
-                                 scene.ids_with(BoundaryCondition::contact),
-                                 *exact);
+        record.pressure_error = compute_pressure_error(
+          mapping, dof_handler, multipliers, scene.contact_ids(), *exact);
         if (!std::isfinite(record.pressure_error))
           throw InputError("The entry <Exact solution/Contact pressure> is "
                            "not a finite number (NaN or infinity) at some "
@@ -129,9 +142,13 @@ namespace dualcontact
   {
     double local = 0.;
     if (contact_set.friction)
-      for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-        local += contact_set.nodes[s].weight *
-                 (contact_set.l2[s] * contact_set.slip(solution, s));
+      {
+        const TrilinosWrappers::MPI::Vector &u =
+          contact_set.with_masters(solution);
+        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+          local += contact_set.nodes[s].weight *
+                   (contact_set.l2[s] * contact_set.slip(u, s));
+      }
     return Utilities::MPI::sum(local, mpi_communicator);
   }
 

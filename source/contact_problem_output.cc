@@ -163,7 +163,7 @@ namespace dualcontact
         boundary.set_flags(flags);
         boundary.build_patches(mapping,
                                dof_handler,
-                               scene.ids_with(BoundaryCondition::contact),
+                               scene.contact_ids(),
                                contact_set,
                                solution,
                                hanging_node_constraints,

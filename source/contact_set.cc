@@ -27,7 +27,9 @@ namespace dualcontact
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     const FiniteElement<dim> &fe    = dof_handler.get_fe();
     const IndexSet           &owned = dof_handler.locally_owned_dofs();
-    const auto contact_ids = scene.ids_with(BoundaryCondition::contact);
+    // the obstacle's ids and the slave ids of the contact pairs
+    const auto contact_ids = scene.contact_ids();
+    std::map<types::global_dof_index, types::boundary_id> slave_id_of;
 
     obstacle = &scene.obstacle();
 
@@ -100,7 +102,11 @@ namespace dualcontact
                         cell, fe.unit_support_point(i));
                   }
               for (const auto &[base, node] : on_face)
-                candidates.emplace(node.dofs[0], node);
+                {
+                  candidates.emplace(node.dofs[0], node);
+                  if (scene.contact_pairs().count(cell->face(f)->boundary_id()))
+                    slave_id_of[node.dofs[0]] = cell->face(f)->boundary_id();
+                }
             }
     weights.compress(VectorOperation::add);
     body_normals.compress(VectorOperation::add);
@@ -128,6 +134,7 @@ namespace dualcontact
           node.body_normal /= node.body_normal.norm();
         nodes.push_back(node);
       }
+    couple_pairs(mapping, dof_handler, scene, slave_id_of);
     place_obstacle(scene, comm);
 
     l1.assign(nodes.size(), 0.);
@@ -184,6 +191,9 @@ namespace dualcontact
     unsigned int no_normal = 0, corners = 0;
     for (auto &node : nodes)
       {
+        // a paired node's gap and normal are the pair's (couple_pairs())
+        if (!node.masters.empty())
+          continue;
         node.gap0                            = scene.initial_gap(node.position);
         std::tie(node.normal, node.tangents) = basis_at(node.position);
         // Where the obstacle's nearest point is a corner or an edge, its
@@ -240,11 +250,15 @@ namespace dualcontact
   ContactSet<dim>::set_slip_origin(const TrilinosWrappers::MPI::Vector &u,
                                    const Tensor<1, dim> &obstacle_step)
   {
+    const TrilinosWrappers::MPI::Vector &w = with_masters(u);
     for (unsigned int s = 0; s < nodes.size(); ++s)
       {
-        slip_origin[s] = tangential_displacement(u, s);
-        for (unsigned int k = 0; k < dim - 1; ++k)
-          slip_origin[s][k] += obstacle_step * nodes[s].tangents[k];
+        slip_origin[s] = tangential_displacement(w, s);
+        // the obstacle's translation moves the origin of the nodes that
+        // face it; a pair's nodes slip against the master only
+        if (nodes[s].masters.empty())
+          for (unsigned int k = 0; k < dim - 1; ++k)
+            slip_origin[s][k] += obstacle_step * nodes[s].tangents[k];
       }
   }
 
@@ -312,11 +326,12 @@ namespace dualcontact
   {
     z.resize(nodes.size());
     y.resize(nodes.size());
+    const TrilinosWrappers::MPI::Vector &w = with_masters(v);
     for (unsigned int s = 0; s < nodes.size(); ++s)
       {
-        z[s] = l1[s] + r * (normal_displacement(v, s) - nodes[s].gap0);
+        z[s] = l1[s] + r * (normal_displacement(w, s) - nodes[s].gap0);
         if (friction)
-          y[s] = l2[s] + r_t * slip(v, s);
+          y[s] = l2[s] + r_t * slip(w, s);
       }
   }
 

@@ -39,8 +39,7 @@ namespace dualcontact
                     const Scene<dim>         &scene)
           : fe(fe)
           , scene(scene)
-          , lambda(scene.parameters.material.lambda())
-          , mu(scene.parameters.material.mu())
+          , material(scene.parameters.material)
           , simplex(!fe.reference_cell().is_hyper_cube())
           , quadrature(cell_quadrature(fe, fe.degree + 1))
           , face_quadrature(dualcontact::face_quadrature(fe, fe.degree + 1))
@@ -81,6 +80,9 @@ namespace dualcontact
         const unsigned int               n_dofs = fe.n_dofs_per_cell();
         const FEValuesExtractors::Vector displacement(0);
         const Function<dim>             *body_force = scene.body_force();
+        // each body its material (<Material/Materials by id>)
+        const MaterialParameters here   = material.of(cell->material_id());
+        const double             lambda = here.lambda(), mu = here.mu();
         fe_values.reinit(cell);
         matrix         = 0;
         mass           = 0;
@@ -156,7 +158,7 @@ namespace dualcontact
 
       const FiniteElement<dim> &fe;
       const Scene<dim>         &scene;
-      const double              lambda, mu;
+      const MaterialParameters &material;
       const bool                simplex;
       const Quadrature<dim>     quadrature;
       const Quadrature<dim - 1> face_quadrature;

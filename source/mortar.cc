@@ -45,6 +45,9 @@ namespace dualcontact
           };
           for (const Segment &m : master)
             {
+              if (s.normal.norm() > 0. && m.normal.norm() > 0. &&
+                  s.normal * m.normal >= -0.5)
+                continue;
               const double xi0 = coordinate(m.x[0]);
               const double xi1 = coordinate(m.x[1]);
               // a master segment at a right angle to the slave projects

@@ -80,9 +80,10 @@ namespace dualcontact
     smooth -= rhs;
     constraints.set_zero(smooth);
     gradient = smooth;
-    // contact terms m_s ((z_s)^+ n + T proj_g(y_s))
-    Vector<double>                       local_vector(dim);
-    std::vector<types::global_dof_index> local_dofs(dim);
+    // contact terms m_s ((z_s)^+ n + T proj_g(y_s)) at the node, and on a
+    // pair their share -c_sj of them at each master node j
+    Vector<double>                       local_vector;
+    std::vector<types::global_dof_index> local_dofs;
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
         const double   m = contact.nodes[s].weight;
@@ -97,10 +98,19 @@ namespace dualcontact
           }
         if (force.norm() == 0.)
           continue;
+        const auto &masters = contact.nodes[s].masters;
+        local_vector.reinit(dim * (1 + masters.size()));
+        local_dofs.resize(dim * (1 + masters.size()));
         for (unsigned int c = 0; c < dim; ++c)
           {
             local_vector(c) = force[c];
             local_dofs[c]   = contact.nodes[s].dofs[c];
+            for (unsigned int j = 0; j < masters.size(); ++j)
+              {
+                local_vector(dim * (j + 1) + c) =
+                  -masters[j].coefficient * force[c];
+                local_dofs[dim * (j + 1) + c] = masters[j].dofs[c];
+              }
           }
         constraints.distribute_local_to_global(local_vector,
                                                local_dofs,
@@ -120,9 +130,10 @@ namespace dualcontact
       system->homogeneous_constraints;
     FullMatrix<double> local_matrix(dim, dim);
     // a DoF as the condensed space sees it: itself, or the masters of a
-    // hanging node with their weights, or nothing (a prescribed DoF)
-    std::array<std::vector<std::pair<types::global_dof_index, double>>, dim>
-      rows;
+    // hanging node with their weights, or nothing (a prescribed DoF); for
+    // each of the node's DoFs, then each of its master nodes' on a pair
+    std::vector<std::vector<std::pair<types::global_dof_index, double>>> rows;
+    std::vector<double> coefficient; // of each node: 1, then -c_sj
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
         const double          m_r  = contact.nodes[s].weight * system->r;
@@ -156,25 +167,38 @@ namespace dualcontact
         // condensed by hand rather than by distribute_local_to_global, which
         // also puts a positive diagonal entry on constrained rows: those
         // would not come off again in remove_contact_terms()
-        for (unsigned int a = 0; a < dim; ++a)
-          {
-            const types::global_dof_index dof = contact.nodes[s].dofs[a];
-            rows[a].clear();
-            if (!constraints.is_constrained(dof))
-              rows[a].emplace_back(dof, 1.);
-            else if (const auto *masters =
-                       constraints.get_constraint_entries(dof))
-              rows[a] = *masters;
-          }
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            if (local_matrix(a, b) != 0.)
-              for (const auto &[row, row_weight] : rows[a])
-                for (const auto &[column, column_weight] : rows[b])
-                  contact_terms.push_back(
-                    {row,
-                     column,
-                     row_weight * column_weight * local_matrix(a, b)});
+        // the node's terms act on B v = v_s - sum_j c_sj v_j (v_s alone
+        // against the obstacle): B^T (local matrix) B
+        const auto        &masters = contact.nodes[s].masters;
+        const unsigned int n_nodes = 1 + masters.size();
+        rows.assign(dim * n_nodes, {});
+        coefficient.assign(n_nodes, 1.);
+        for (unsigned int i = 0; i < n_nodes; ++i)
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              const types::global_dof_index dof =
+                i == 0 ? contact.nodes[s].dofs[a] : masters[i - 1].dofs[a];
+              if (i > 0)
+                coefficient[i] = -masters[i - 1].coefficient;
+              if (!constraints.is_constrained(dof))
+                rows[dim * i + a].emplace_back(dof, 1.);
+              else if (const auto *entries =
+                         constraints.get_constraint_entries(dof))
+                rows[dim * i + a] = *entries;
+            }
+        for (unsigned int i = 0; i < n_nodes; ++i)
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = 0; b < dim; ++b)
+                if (local_matrix(a, b) != 0.)
+                  for (const auto &[row, row_weight] : rows[dim * i + a])
+                    for (const auto &[column, column_weight] :
+                         rows[dim * k + b])
+                      contact_terms.push_back({row,
+                                               column,
+                                               coefficient[i] * coefficient[k] *
+                                                 row_weight * column_weight *
+                                                 local_matrix(a, b)});
       }
     for (const ContactEntry &entry : contact_terms)
       H.add(entry.row, entry.column, entry.value);
@@ -288,12 +312,13 @@ namespace dualcontact
         system->mass.vmult(tmp, free_direction);
         q2 += system->proximal_correction() * (free_direction * tmp);
       }
-    const double q1 = smooth_gradient * direction;
+    const double                         q1 = smooth_gradient * direction;
+    const TrilinosWrappers::MPI::Vector &d  = contact.with_masters(direction);
     for (unsigned int s = 0; s < n; ++s)
       {
-        dn[s] = contact.normal_displacement(direction, s);
+        dn[s] = contact.normal_displacement(d, s);
         if (contact.friction)
-          dt[s] = contact.tangential_displacement(direction, s);
+          dt[s] = contact.tangential_displacement(d, s);
       }
     // phi'(a) and phi''(a) (the latter from the right), summed over ranks
     const auto derivatives = [&](const double alpha) {

@@ -50,7 +50,7 @@ namespace dualcontact
   check_initial_position(const Triangulation<dim> &triangulation,
                          const Scene<dim>         &scene)
   {
-    if (!scene.effects().contact)
+    if (!scene.effects().obstacle_contact)
       return;
     const double tolerance = 1e-8 * scene.characteristic_length();
     // the extreme signed distances of all vertices and of the contact
@@ -114,7 +114,7 @@ namespace dualcontact
     double         max_u = 0., deepest = 0.;
     double         lowest_contact = std::numeric_limits<double>::max();
     unsigned int   deepest_id     = 0;
-    const bool     contact        = scene.effects().contact;
+    const bool     contact        = scene.effects().obstacle_contact;
     const auto     on_contact     = [&scene](const types::boundary_id id) {
       return scene.parameters.boundary.condition(id) ==
              BoundaryCondition::contact;

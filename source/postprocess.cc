@@ -18,8 +18,7 @@ namespace dualcontact
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(
     const MaterialParameters &material)
-      : lambda(material.lambda())
-      , mu(material.mu())
+      : material(material)
   {}
 
   template <int dim>
@@ -28,6 +27,10 @@ namespace dualcontact
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>>                &computed_quantities) const
   {
+    // the material of the cell (<Material/Materials by id>)
+    const MaterialParameters here =
+      material.of(inputs.template get_cell<dim>()->material_id());
+    const double lambda = here.lambda(), mu = here.mu();
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
         Tensor<2, dim> grad;

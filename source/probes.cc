@@ -291,9 +291,29 @@ namespace dualcontact
       mapping, dof_handler, solution, where, cache);
     const auto grad =
       VectorTools::point_gradients<dim>(cache, dof_handler, solution);
-    const double       lambda = material.lambda();
-    const double       mu     = material.mu();
-    std::vector<Value> values(points.size());
+    // the material id of (the first of) the cells that hold each point
+    std::vector<double>       ids, buffer;
+    const Triangulation<dim> &triangulation = dof_handler.get_triangulation();
+    cache.template evaluate_and_process<double>(
+      ids,
+      buffer,
+      [&](const ArrayView<double> &values,
+          const typename Utilities::MPI::RemotePointEvaluation<dim>::CellData
+            &cell_data) {
+        for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
+          {
+            const typename Triangulation<dim>::active_cell_iterator cell(
+              &triangulation,
+              cell_data.cells[c].first,
+              cell_data.cells[c].second);
+            for (unsigned int q = cell_data.reference_point_ptrs[c];
+                 q < cell_data.reference_point_ptrs[c + 1];
+                 ++q)
+              values[q] = cell->material_id();
+          }
+      });
+    const std::vector<unsigned int> &first = cache.get_point_ptrs();
+    std::vector<Value>               values(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
         Value &value = values[i];
@@ -301,6 +321,9 @@ namespace dualcontact
         value.point  = points[i];
         if (cache.point_found(i))
           {
+            const MaterialParameters here =
+              material.of(static_cast<types::material_id>(ids[first[i]]));
+            const double lambda = here.lambda(), mu = here.mu();
             value.displacement = u[i];
             value.stress       = stress_from_gradient(grad[i], lambda, mu);
             value.stress_zz    = out_of_plane_stress(grad[i], lambda);

@@ -245,6 +245,9 @@ namespace dualcontact
     std::vector<std::string> parts;
     for (const auto &[id, condition] : parameters.boundary.conditions)
       parts.push_back("id " + std::to_string(id) + " " + to_string(condition));
+    for (const auto &[slave, master] : parameters.boundary.contact_pairs)
+      parts.push_back("id " + std::to_string(slave) + " slave, id " +
+                      std::to_string(master) + " master of a contact pair");
     pcout << wrap("Boundary parts: ", parts, ", ", "  ");
     pcout << "Effects composed for this scene:\n" << scene.effects().describe();
   }

@@ -106,7 +106,7 @@ namespace dualcontact
       const GeometryParameters   &g = parameters.geometry;
       const RefinementParameters &r = parameters.refinement;
       std::vector<std::string>    entries;
-      if (g.type == GeometryType::rectangle)
+      if (is_box(g.type))
         {
           std::string n;
           for (const unsigned int s : g.subdivisions)

@@ -22,6 +22,9 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <map>
+#include <numeric>
+#include <set>
 #include <sstream>
 
 namespace dualcontact
@@ -233,16 +236,327 @@ namespace dualcontact
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * The half disc (3D: half ball) below its flat top through `center`,
+     * normal +e_{dim-1}, or in 2D with `quarter` its lower right quarter; no
+     * manifolds, ids 0. In 2D both are made of deal.II's quarter ball (the
+     * quadrant x, y >= 0) turned by -90 degrees (lower right quarter) and,
+     * for the half disc, by 180 degrees (lower left quarter): the quarter
+     * ball is symmetric about its diagonal, so the half disc's mesh is
+     * symmetric about the line x = x_c, which is a mesh line, and its right
+     * half is exactly the quarter disc's mesh. In 3D the half ball x >= 0
+     * is turned so that its cut plane is the top.
+     */
+    template <int dim>
+    void
+    make_lower_half_disc(Triangulation<dim> &result,
+                         const Point<dim>   &center,
+                         const double        radius,
+                         const bool          quarter)
+    {
+      const auto turn = [&](const auto &rotation) {
+        Triangulation<dim> part;
+        if (dim == 2)
+          GridGenerator::quarter_hyper_ball(part, Point<dim>(), radius);
+        else
+          GridGenerator::half_hyper_ball(part, Point<dim>(), radius);
+        GridTools::transform(rotation, part);
+        return part;
+      };
+      const auto lower_right = turn([&](const Point<dim> &p) {
+        Point<dim> q;
+        if (dim == 2)
+          q = Point<dim>(p[1], -p[0]);
+        else // a proper rotation: (x,y,z) -> (-y, z, -x)
+          {
+            q[0]       = -p[1];
+            q[1]       = p[dim - 1];
+            q[dim - 1] = -p[0];
+          }
+        return q + center;
+      });
+      if (dim == 2 && !quarter)
+        GridGenerator::merge_triangulations(lower_right,
+                                            turn([&](const Point<dim> &p) {
+                                              return center - p;
+                                            }),
+                                            result);
+      else
+        result.copy_triangulation(lower_right);
+      result.reset_all_manifolds();
+    }
+
+    /**
+     * The bodies `parts` in one coarse mesh that shares no vertex between
+     * them, not even where they touch (GridGenerator::merge_triangulations
+     * would glue those): body i's cells get material id i. Boundary ids
+     * are the caller's to set.
+     */
+    template <int dim>
+    void
+    join_bodies(const std::vector<const Triangulation<dim> *> &parts,
+                Triangulation<dim>                            &result)
+    {
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
+      for (unsigned int body = 0; body < parts.size(); ++body)
+        {
+          const unsigned int offset = vertices.size();
+          vertices.insert(vertices.end(),
+                          parts[body]->get_vertices().begin(),
+                          parts[body]->get_vertices().end());
+          for (const auto &cell : parts[body]->active_cell_iterators())
+            {
+              CellData<dim> data(cell->n_vertices());
+              for (const unsigned int v : cell->vertex_indices())
+                data.vertices[v] = offset + cell->vertex_index(v);
+              data.material_id = body;
+              cells.push_back(data);
+            }
+        }
+      result.create_triangulation(vertices, cells, SubCellData());
+    }
+
+    /**
+     * Two half discs (3D: half balls) that touch at `contact`: the upper
+     * one (radius R1, material id 1) below its flat top, the lower one
+     * (radius R2, material id 0) above its flat bottom, the mesh of a lower
+     * half disc turned by 180 degrees (about the x axis in 3D), a proper
+     * rotation. Boundary ids: 0 on the upper body's curved part, 1 on its
+     * top, 2 on the lower body's curved part, 3 on its bottom. The caller
+     * attaches the manifolds: the circles (spheres) 0 and 2 and a
+     * transfinite interpolation inside.
+     */
+    template <int dim>
+    void
+    make_two_half_discs(Triangulation<dim> &result,
+                        const Point<dim>   &contact,
+                        const double        upper_radius,
+                        const double        lower_radius)
+    {
+      Point<dim> upper_center(contact), lower_center(contact);
+      upper_center[dim - 1] += upper_radius;
+      lower_center[dim - 1] -= lower_radius;
+      Triangulation<dim> upper, lower;
+      make_lower_half_disc(upper, upper_center, upper_radius, false);
+      make_lower_half_disc(lower, Point<dim>(), lower_radius, false);
+      GridTools::transform(
+        [&](const Point<dim> &p) {
+          Point<dim> q = -p;
+          if (dim == 3)
+            q[0] = p[0];
+          return q + lower_center;
+        },
+        lower);
+      join_bodies<dim>({&lower, &upper}, result);
+      for (const auto &cell : result.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const bool   on_upper = cell->material_id() == 1;
+              const double radius   = on_upper ? upper_radius : lower_radius;
+              // the flat sides pass through the discs' centres
+              const double flat =
+                on_upper ? upper_center[dim - 1] : lower_center[dim - 1];
+              const bool is_flat =
+                std::abs(face->center()[dim - 1] - flat) < 1e-8 * radius;
+              face->set_boundary_id((on_upper ? 0 : 2) + (is_flat ? 1 : 0));
+            }
+    }
+
+    /**
+     * The pre-refinement band of a scene whose contact is between bodies:
+     * the vertices of the pairs' surfaces (slave and master ids) of all
+     * ranks with their bodies, binned in squares (cubes) of the band's
+     * width, so that a vertex finds those within the width in the 3^dim
+     * bins around it.
+     */
+    template <int dim>
+    class PairBand
+    {
+    public:
+      PairBand() = default;
+
+      PairBand(const Triangulation<dim> &triangulation,
+               const std::map<types::boundary_id, types::boundary_id> &pairs,
+               const double                                            width)
+          : width(std::max(width, std::numeric_limits<double>::min()))
+          , bodies(bodies_of_coarse_cells(triangulation))
+      {
+        std::set<types::boundary_id> ids;
+        for (const auto &[slave, master] : pairs)
+          {
+            ids.insert(slave);
+            ids.insert(master);
+          }
+        std::vector<double> local;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() && ids.count(face->boundary_id()))
+                for (const unsigned int v : face->vertex_indices())
+                  {
+                    for (unsigned int d = 0; d < dim; ++d)
+                      local.push_back(face->vertex(v)[d]);
+                    local.push_back(body_of<dim>(cell, bodies));
+                  }
+        for (const auto &part :
+             Utilities::MPI::all_gather(triangulation.get_communicator(),
+                                        local))
+          for (std::size_t i = 0; i + dim < part.size(); i += dim + 1)
+            {
+              Point<dim> x;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = part[i + d];
+              bins[bin_of(x)].emplace_back(
+                x, static_cast<unsigned int>(part[i + dim]));
+            }
+      }
+
+      /** Whether vertex v of `cell` lies within the width of another body's
+       * paired surface. */
+      template <typename Iterator>
+      bool
+      near(const Iterator &cell, const unsigned int v) const
+      {
+        const Point<dim>   x    = cell->vertex(v);
+        const unsigned int body = body_of<dim>(cell, bodies);
+        const auto         home = bin_of(x);
+        for (unsigned int k = 0; k < std::pow(3, dim); ++k)
+          {
+            auto         key  = home;
+            unsigned int rest = k;
+            for (unsigned int d = 0; d < dim; ++d, rest /= 3)
+              key[d] += static_cast<long>(rest % 3) - 1;
+            const auto it = bins.find(key);
+            if (it != bins.end())
+              for (const auto &[p, other] : it->second)
+                if (other != body && x.distance(p) <= width)
+                  return true;
+          }
+        return false;
+      }
+
+    private:
+      std::array<long, dim>
+      bin_of(const Point<dim> &x) const
+      {
+        std::array<long, dim> key;
+        for (unsigned int d = 0; d < dim; ++d)
+          key[d] = static_cast<long>(std::floor(x[d] / width));
+        return key;
+      }
+
+      double                    width = 0.;
+      std::vector<unsigned int> bodies;
+      std::map<std::array<long, dim>,
+               std::vector<std::pair<Point<dim>, unsigned int>>>
+        bins;
+    };
+
+    /**
+     * Two boxes [lower, cut_low] and [cut_high, upper] that touch on the cut
+     * x_{dim-1} = cut, each subdivided on its own, in one coarse mesh whose
+     * vertices on the cut are not shared: two bodies. Boundary ids as the
+     * box's (2 d on the lower, 2 d + 1 on the upper side along x_d), and
+     * on the cut 2 dim for the lower block's top and 2 dim + 1 for the upper
+     * block's bottom; material id 0 for the lower and 1 for the upper block.
+     */
+    template <int dim>
+    void
+    make_two_blocks(Triangulation<dim>              &result,
+                    const std::vector<unsigned int> &lower_subdivisions,
+                    const std::vector<unsigned int> &upper_subdivisions,
+                    const Point<dim>                &lower,
+                    const Point<dim>                &cut_low,
+                    const Point<dim>                &cut_high,
+                    const Point<dim>                &upper,
+                    const bool                       simplex)
+    {
+      std::array<Triangulation<dim>, 2> blocks;
+      for (const unsigned int block : {0u, 1u})
+        {
+          const auto &n = block == 0 ? lower_subdivisions : upper_subdivisions;
+          const Point<dim> &a = block == 0 ? lower : cut_high;
+          const Point<dim> &b = block == 0 ? cut_low : upper;
+          if (simplex)
+            GridGenerator::subdivided_hyper_rectangle_with_simplices(
+              blocks[block], n, a, b);
+          else
+            GridGenerator::subdivided_hyper_rectangle(blocks[block], n, a, b);
+        }
+      join_bodies<dim>({&blocks[0], &blocks[1]}, result);
+      const double cut = cut_low[dim - 1];
+      for (const auto &cell : result.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<dim> x = face->center();
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const double tolerance = 1e-10 * (upper[d] - lower[d]);
+                  if (d == dim - 1 && std::abs(x[d] - cut) < tolerance)
+                    face->set_boundary_id(2 * dim + cell->material_id());
+                  else if (std::abs(x[d] - lower[d]) < tolerance)
+                    face->set_boundary_id(2 * d);
+                  else if (std::abs(x[d] - upper[d]) < tolerance)
+                    face->set_boundary_id(2 * d + 1);
+                }
+            }
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<unsigned int>
+  bodies_of_coarse_cells(const Triangulation<dim> &triangulation)
+  {
+    const unsigned int        n_cells = triangulation.n_cells(0);
+    std::vector<unsigned int> parent(n_cells);
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto root = [&parent](unsigned int i) {
+      while (parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    std::map<unsigned int, unsigned int> first_cell_at_vertex;
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const auto [it, inserted] =
+            first_cell_at_vertex.emplace(cell->vertex_index(v), cell->index());
+          if (!inserted)
+            {
+              const unsigned int a = root(it->second), b = root(cell->index());
+              parent[std::max(a, b)] = std::min(a, b);
+            }
+        }
+    std::vector<unsigned int> body(n_cells);
+    for (unsigned int i = 0; i < n_cells; ++i)
+      body[i] = root(i);
+    return body;
+  }
+
+  template std::vector<unsigned int>
+  bodies_of_coarse_cells(const Triangulation<2> &);
+  template std::vector<unsigned int>
+  bodies_of_coarse_cells(const Triangulation<3> &);
+
   std::string
   Effects::describe() const
   {
     std::ostringstream out;
     out << "  contact with the obstacle   : "
-        << (contact ? "yes: Uzawa on the modified Lagrangian" :
-                      "no: one linear elasticity solve per mesh")
+        << (obstacle_contact ? "yes: Uzawa on the modified Lagrangian" :
+            contact          ? "no" :
+                               "no: one linear elasticity solve per mesh")
         << '\n';
-    if (contact)
+    if (obstacle_contact)
       out << "  obstacle                    : " << obstacle << '\n';
+    if (!pairs.empty())
+      out << "  contact between bodies      : slave on master " << pairs
+          << ": dual mortar, Uzawa on the modified Lagrangian\n";
     out << "  friction                    : "
         << (!contact      ? "no (no contact)" :
             zero_friction ? "no: the coefficient/threshold is zero, the "
@@ -361,7 +675,12 @@ namespace dualcontact
                                             obstacle_entries_text(parameters));
     set_time(times.front());
 
-    effects_.contact  = !ids_with(BoundaryCondition::contact).empty();
+    effects_.contact =
+      !ids_with(BoundaryCondition::contact).empty() || !contact_pairs().empty();
+    effects_.obstacle_contact = !ids_with(BoundaryCondition::contact).empty();
+    for (const auto &[slave, master] : contact_pairs())
+      effects_.pairs += (effects_.pairs.empty() ? "" : ", ") +
+                        std::to_string(slave) + " on " + std::to_string(master);
     effects_.obstacle = (*obstacle_)->description();
     obstacle_moves_   = obstacle_->displacement().norm() > 0;
     if (obstacle_path != nullptr && times.size() > 1 && uses_time(path))
@@ -455,7 +774,9 @@ namespace dualcontact
           length = std::max(length, mesh_upper_right[d] - mesh_lower_left[d]);
         return length;
       }
-    if (g.type != GeometryType::rectangle)
+    if (g.type == GeometryType::two_half_discs)
+      return std::max(g.radius, g.lower_radius);
+    if (!is_box(g.type))
       return g.radius;
     for (unsigned int d = 0; d < dim; ++d)
       length = std::max(length, g.upper_right[d] - g.lower_left[d]);
@@ -469,7 +790,7 @@ namespace dualcontact
     const GeometryParameters &g = parameters.geometry;
     if (g.type == GeometryType::mesh_file)
       return 0.5 * (mesh_lower_left + mesh_upper_right);
-    if (g.type != GeometryType::rectangle)
+    if (!is_box(g.type))
       return to_point<dim>(g.center);
     return 0.5 * (to_point<dim>(g.lower_left) + to_point<dim>(g.upper_right));
   }
@@ -533,6 +854,60 @@ namespace dualcontact
                                                       g.upper_right),
                                                     /*colorize=*/true);
       }
+    else if (g.type == GeometryType::two_blocks)
+      {
+        const Point<dim> lower = to_point<dim>(g.lower_left);
+        const Point<dim> upper = to_point<dim>(g.upper_right);
+        Point<dim>       cut_low(upper), cut_high(lower);
+        const double     cut = 0.5 * (lower[dim - 1] + upper[dim - 1]);
+        cut_low[dim - 1]     = cut;
+        cut_high[dim - 1]    = cut;
+        if (before_refining)
+          {
+            double n_lower = simplex ? (dim == 2 ? 2. : 5.) : 1.;
+            double n_upper = n_lower;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                n_lower *= g.subdivisions[d];
+                n_upper *= g.upper_subdivisions[d];
+              }
+            before_refining(
+              (n_lower + n_upper) *
+              std::pow(children,
+                       parameters.refinement.initial_global_refinement));
+          }
+        Triangulation<dim> serial;
+        make_two_blocks(serial,
+                        {g.subdivisions.begin(), g.subdivisions.end()},
+                        {g.upper_subdivisions.begin(),
+                         g.upper_subdivisions.end()},
+                        lower,
+                        cut_low,
+                        cut_high,
+                        upper,
+                        simplex);
+        triangulation.copy_triangulation(serial);
+      }
+    else if (g.type == GeometryType::two_half_discs)
+      {
+        Triangulation<dim> serial;
+        const Point<dim>   contact = to_point<dim>(g.center);
+        make_two_half_discs(serial, contact, g.radius, g.lower_radius);
+        triangulation.copy_triangulation(serial);
+        // the curved parts follow their circles (spheres), the interior
+        // blends toward them (as for the half disc below)
+        Point<dim> upper_center(contact), lower_center(contact);
+        upper_center[dim - 1] += g.radius;
+        lower_center[dim - 1] -= g.lower_radius;
+        triangulation.set_all_manifold_ids(1);
+        triangulation.set_all_manifold_ids_on_boundary(0, 0);
+        triangulation.set_all_manifold_ids_on_boundary(2, 2);
+        triangulation.set_manifold(0, SphericalManifold<dim>(upper_center));
+        triangulation.set_manifold(2, SphericalManifold<dim>(lower_center));
+        TransfiniteInterpolationManifold<dim> inner;
+        inner.initialize(triangulation);
+        triangulation.set_manifold(1, inner);
+      }
     else if (g.type == GeometryType::mesh_file)
       {
         // the file's mesh, read in the constructor; refinement follows the
@@ -550,38 +925,12 @@ namespace dualcontact
         // mesh is symmetric about the line x = x_c, which is a mesh line, and
         // its right half is exactly the quarter disc's mesh. In 3D the half
         // ball x >= 0 is turned so that its cut plane is the top.
-        const Point<dim> center = to_point<dim>(g.center);
-        const auto       turn   = [&](const auto &rotation) {
-          Triangulation<dim> part;
-          if (dim == 2)
-            GridGenerator::quarter_hyper_ball(part, Point<dim>(), g.radius);
-          else
-            GridGenerator::half_hyper_ball(part, Point<dim>(), g.radius);
-          GridTools::transform(rotation, part);
-          return part;
-        };
+        const Point<dim>   center = to_point<dim>(g.center);
         Triangulation<dim> serial;
-        const auto         lower_right = turn([&](const Point<dim> &p) {
-          Point<dim> q;
-          if (dim == 2)
-            q = Point<dim>(p[1], -p[0]);
-          else // a proper rotation: (x,y,z) -> (-y, z, -x)
-            {
-              q[0]       = -p[1];
-              q[1]       = p[dim - 1];
-              q[dim - 1] = -p[0];
-            }
-          return q + center;
-        });
-        if (dim == 2 && g.type == GeometryType::half_disc)
-          GridGenerator::merge_triangulations(lower_right,
-                                              turn([&](const Point<dim> &p) {
-                                                return center - p;
-                                              }),
-                                              serial);
-        else
-          serial.copy_triangulation(lower_right);
-        serial.reset_all_manifolds();
+        make_lower_half_disc(serial,
+                             center,
+                             g.radius,
+                             g.type == GeometryType::quarter_disc);
 
         // Boundary ids: 1 on the flat top, 2 on the symmetry line of the
         // quarter disc, 0 on the curved part.
@@ -663,17 +1012,31 @@ namespace dualcontact
           Utilities::MPI::max(farthest, triangulation.get_communicator());
       }
 
+    // In a scene whose contact is between bodies only, the band lies
+    // around the pairs' surfaces: a cell is near if one of its vertices
+    // lies within the distance of a vertex of another body's paired
+    // surface (PairBand).
+    const bool toward_pairs =
+      !effects_.obstacle_contact && !contact_pairs().empty();
+    if (toward_pairs)
+      farthest = std::numeric_limits<double>::max();
+
     double distance = g.pre_refinement_distance;
     for (unsigned int step = 0; step < g.pre_refinement_steps;
          ++step, distance *= g.pre_refinement_grading)
       {
+        const PairBand<dim> band =
+          toward_pairs ?
+            PairBand<dim>(triangulation, contact_pairs(), distance) :
+            PairBand<dim>();
         // (a replicated mesh of simplices refines the cells that every
         // rank flags alike: all of them are flagged)
         unsigned int n_flagged = 0;
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned() || simplex)
             for (const unsigned int v : cell->vertex_indices())
-              if (initial_gap(cell->vertex(v)) <= distance)
+              if (toward_pairs ? band.near(cell, v) :
+                                 initial_gap(cell->vertex(v)) <= distance)
                 {
                   cell->set_refine_flag();
                   n_flagged += cell->is_locally_owned() ? 1 : 0;

@@ -59,12 +59,13 @@ namespace dualcontact
     // sums: |dl1|^2, |l1|^2, |dl2|^2, |l2|^2, |dg|^2, |g|^2
     double                  sums[6] = {0, 0, 0, 0, 0, 0};
     double                  l1_max = 0, violation = 0, complementarity = 0;
-    types::global_dof_index counts[3] = {0, 0, 0}; // active, stick, slip
+    types::global_dof_index counts[3]      = {0, 0, 0}; // active, stick, slip
+    const TrilinosWrappers::MPI::Vector &w = contact.with_masters(v);
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
         const double l1_new = positive_part(z[s]);
         const double gap =
-          contact.nodes[s].gap0 - contact.normal_displacement(v, s);
+          contact.nodes[s].gap0 - contact.normal_displacement(w, s);
         sums[0] += std::pow(l1_new - contact.l1[s], 2);
         sums[1] += l1_new * l1_new;
         l1_max          = std::max(l1_max, l1_new);

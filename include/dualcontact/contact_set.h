@@ -13,6 +13,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <dualcontact/friction_law.h>
@@ -20,6 +21,7 @@
 #include <dualcontact/scene.h>
 
 #include <array>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -27,7 +29,21 @@ namespace dualcontact
 {
   using namespace dealii;
 
-  /** One contact node s: a support point on Gamma_C that is not hanging. */
+  /**
+   * A master node j that the dual function of a paired contact node sees:
+   * its DoFs and c_sj = M_sj / sum_j M_sj (doc/two_bodies.md).
+   */
+  template <int dim>
+  struct MasterTerm
+  {
+    std::array<types::global_dof_index, dim> dofs;
+    double                                   coefficient = 0.;
+  };
+
+  /**
+   * One contact node s: a support point on Gamma_C, or on the slave side of
+   * a contact pair, that is not hanging.
+   */
   template <int dim>
   struct ContactNode
   {
@@ -41,6 +57,10 @@ namespace dualcontact
     std::array<Tensor<1, dim>, dim - 1> tangents;
     // the body's outward unit normal at the node (the mean of its faces')
     Tensor<1, dim> body_normal;
+    // on the slave side of a contact pair: the master nodes it sees, so that
+    // its normal and tangential displacements are relative to the master's
+    // sum_j c_sj v_j; empty against the rigid obstacle
+    std::vector<MasterTerm<dim>> masters;
   };
 
   /**
@@ -70,31 +90,87 @@ namespace dualcontact
           const AffineConstraints<double> &all_constraints,
           const Scene<dim>                &scene);
 
-    /** Normal displacement v_n(s) = v(s).n at local node s (owned entries). */
+    /**
+     * The displacement of local node s relative to what it faces: v(s)
+     * against the rigid obstacle, v(s) - sum_j c_sj v_j on the slave side
+     * of a pair. `v` must hold the masters' entries: with_masters(v).
+     */
+    Tensor<1, dim>
+    relative_displacement(const TrilinosWrappers::MPI::Vector &v,
+                          const unsigned int                   s) const
+    {
+      Tensor<1, dim> w;
+      for (unsigned int c = 0; c < dim; ++c)
+        w[c] = v[nodes[s].dofs[c]];
+      for (const MasterTerm<dim> &master : nodes[s].masters)
+        for (unsigned int c = 0; c < dim; ++c)
+          w[c] -= master.coefficient * v[master.dofs[c]];
+      return w;
+    }
+
+    /**
+     * Normal displacement v_n(s) = v(s).n at local node s (relative to the
+     * master on a pair; `v` as for relative_displacement()).
+     */
     double
     normal_displacement(const TrilinosWrappers::MPI::Vector &v,
                         const unsigned int                   s) const
     {
-      double vn = 0;
-      for (unsigned int c = 0; c < dim; ++c)
-        vn += v[nodes[s].dofs[c]] * nodes[s].normal[c];
-      return vn;
+      return relative_displacement(v, s) * nodes[s].normal;
     }
 
     /**
      * Tangential displacement v_t(s) at local node s, in the basis of the
-     * tangents (one component in 2D).
+     * tangents (one component in 2D); relative to the master on a pair.
      */
     Tensor<1, dim - 1>
     tangential_displacement(const TrilinosWrappers::MPI::Vector &v,
                             const unsigned int                   s) const
     {
-      Tensor<1, dim - 1> vt;
+      const Tensor<1, dim> w = relative_displacement(v, s);
+      Tensor<1, dim - 1>   vt;
       for (unsigned int k = 0; k < dim - 1; ++k)
-        for (unsigned int c = 0; c < dim; ++c)
-          vt[k] += v[nodes[s].dofs[c]] * nodes[s].tangents[k][c];
+        vt[k] = w * nodes[s].tangents[k];
       return vt;
     }
+
+    /**
+     * `v` with the entries the relative displacements read: v itself
+     * without contact pairs, else a copy that also holds the master nodes'
+     * entries of this rank's paired nodes (an import; collective).
+     */
+    const TrilinosWrappers::MPI::Vector &
+    with_masters(const TrilinosWrappers::MPI::Vector &v) const;
+
+    /** Whether some contact node of any rank lies on a contact pair. */
+    bool
+    has_pairs() const
+    {
+      return has_pairs_;
+    }
+
+    /**
+     * Slave nodes (all ranks) that face no master node: not contact nodes.
+     */
+    types::global_dof_index
+    n_uncovered_nodes() const
+    {
+      return n_uncovered;
+    }
+
+    /**
+     * The entries the Newton matrix needs beyond the elements': for each
+     * paired node, its DoFs and its masters' with each other, each DoF as
+     * `constraints` condense it. Rows of other ranks included; the pattern's
+     * row set must hold them (coupled_rows()).
+     */
+    void
+    add_pair_couplings(DynamicSparsityPattern          &pattern,
+                       const AffineConstraints<double> &constraints) const;
+
+    /** The rows add_pair_couplings() writes (this rank's paired nodes). */
+    IndexSet
+    coupled_rows(const AffineConstraints<double> &constraints) const;
 
     /**
      * The slip of v at local node s against the slip origin of the load
@@ -305,6 +381,22 @@ namespace dualcontact
     std::vector<Tensor<1, dim - 1>> slip_origin;
 
   private:
+    /**
+     * The master terms and gaps of the nodes on the slave ids of the
+     * scene's contact pairs (contact_pairs.cc): drops the nodes that face
+     * no master, and counts them.
+     */
+    void
+    couple_pairs(
+      const Mapping<dim>                                          &mapping,
+      const DoFHandler<dim>                                       &dof_handler,
+      const Scene<dim>                                            &scene,
+      const std::map<types::global_dof_index, types::boundary_id> &slave_id_of);
+
+    bool                                  has_pairs_  = false;
+    types::global_dof_index               n_uncovered = 0;
+    mutable TrilinosWrappers::MPI::Vector ghosted, owned_copy;
+
     types::global_dof_index n_global  = 0;
     types::global_dof_index n_hanging = 0;
     unsigned int            n_corner  = 0;

@@ -37,6 +37,11 @@ namespace dualcontact
     {
       std::array<Point<2>, 2>     x;
       std::array<unsigned int, 2> node;
+      // the outward unit normal of its body, or zero: two segments couple
+      // only if they face each other (n_slave . n_master < -1/2), so that a
+      // curved master's far side, which projects onto the slave's line as
+      // well, stays out
+      Tensor<1, 2> normal;
     };
 
     /**
@@ -64,9 +69,11 @@ namespace dualcontact
      * along the slave segment's normal; where the projections overlap,
      * psi_s phi_j is a quadratic polynomial of the slave coordinate,
      * integrated exactly by two Gauss points. A master segment that
-     * projects onto a point (it stands at a right angle to the slave) adds
-     * nothing. The search is over all pairs (for the surfaces of a test or
-     * of a 2D interface; a bounding-box tree replaces it for large ones).
+     * projects onto a point (it stands at a right angle to the slave), or
+     * that does not face the slave segment (normals given and
+     * n_slave . n_master >= -1/2), adds nothing. The search is over all pairs
+     * (for the surfaces of a test or of a 2D interface; a bounding-box tree
+     * replaces it for large ones).
      */
     Coupling
     couple(const std::vector<Segment> &slave,

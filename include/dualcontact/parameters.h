@@ -36,8 +36,17 @@ namespace dualcontact
     rectangle,
     half_disc,
     quarter_disc,
-    mesh_file // a Gmsh .msh file (doc/meshes.md)
+    two_blocks, // a box cut across x_{dim-1}: two bodies (doc/two_bodies.md)
+    two_half_discs, // two half discs (balls) touching at a point
+    mesh_file       // a Gmsh .msh file (doc/meshes.md)
   };
+
+  /** The axis-parallel boxes: the rectangle, and the two blocks. */
+  inline bool
+  is_box(const GeometryType type)
+  {
+    return type == GeometryType::rectangle || type == GeometryType::two_blocks;
+  }
 
   /**
    * Quadrilaterals (hexahedra in 3D) with FE_Q(k), or simplices, triangles
@@ -139,8 +148,10 @@ namespace dualcontact
     std::vector<double>       lower_left;
     std::vector<double>       upper_right;
     std::vector<unsigned int> subdivisions;
+    std::vector<unsigned int> upper_subdivisions; // two blocks: the upper's
     std::vector<double>       center;
     double                    radius                  = 1.;
+    double                    lower_radius            = 1.; // two half discs
     unsigned int              pre_refinement_steps    = 0;
     double                    pre_refinement_distance = 0.;
     double                    pre_refinement_grading  = 1.;
@@ -185,11 +196,58 @@ namespace dualcontact
   {
     double youngs_modulus = 1.;
     double poissons_ratio = 0.3;
+    // <Material/Materials by id>: the bodies of other materials, material
+    // id -> (E, nu); the cells of every other id take the two above
+    std::map<dealii::types::material_id, std::pair<double, double>> by_id;
 
     double
     lambda() const;
     double
     mu() const;
+    /** The P-wave modulus lambda + 2 mu. */
+    double
+    p_wave_modulus() const
+    {
+      return lambda() + 2. * mu();
+    }
+
+    /** The material of the cells with material id `id`. */
+    MaterialParameters
+    of(const dealii::types::material_id id) const
+    {
+      MaterialParameters material;
+      const auto         it = by_id.find(id);
+      material.youngs_modulus =
+        it == by_id.end() ? youngs_modulus : it->second.first;
+      material.poissons_ratio =
+        it == by_id.end() ? poissons_ratio : it->second.second;
+      return material;
+    }
+
+    /**
+     * Whether cells of material id `id` have a material: every id does
+     * while <Material/Materials by id> is empty; once it lists some, the
+     * ids listed and 0, which takes <Young's modulus> and <Poisson's ratio>.
+     */
+    bool
+    has(const dealii::types::material_id id) const
+    {
+      return by_id.empty() || id == 0 || by_id.count(id) > 0;
+    }
+
+    /**
+     * The stiffest of the materials (the largest P-wave modulus): the
+     * contact solver scales its augmentation with it.
+     */
+    MaterialParameters
+    stiffest() const
+    {
+      MaterialParameters result = of(dealii::numbers::invalid_material_id);
+      for (const auto &[id, values] : by_id)
+        if (of(id).p_wave_modulus() > result.p_wave_modulus())
+          result = of(id);
+      return result;
+    }
 
     static void
     declare_parameters(EntryDeclarer &declarer);
@@ -206,11 +264,21 @@ namespace dualcontact
     std::map<boundary_id, BoundaryCondition> conditions;
     std::map<boundary_id, std::string>       displacements; // "u_x; u_y"
     std::map<boundary_id, std::string>       tractions;     // "T_x; T_y"
+    // contact between two parts of the mesh (two bodies): slave id ->
+    // master id, dual mortar (doc/two_bodies.md)
+    std::map<boundary_id, boundary_id> contact_pairs;
 
     BoundaryCondition
     condition(const boundary_id id) const;
     std::vector<boundary_id>
     ids_with(const BoundaryCondition condition) const;
+    /** Contact of any kind: with the obstacle, or a contact pair. */
+    bool
+    has_contact() const
+    {
+      return !ids_with(BoundaryCondition::contact).empty() ||
+             !contact_pairs.empty();
+    }
 
     static void
     declare_parameters(EntryDeclarer &declarer);

@@ -94,8 +94,7 @@ namespace dualcontact
     get_needed_update_flags() const override;
 
   private:
-    const double lambda;
-    const double mu;
+    const MaterialParameters &material;
   };
 
   /**

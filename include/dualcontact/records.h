@@ -60,10 +60,16 @@ namespace dualcontact
   /** measure_contact_zone(): the contact zone at convergence. */
   struct ContactZoneRecord
   {
-    // the force of the body on the obstacle along Gamma_C's mean normal
+    // the force of the body on the obstacle, and of the slave bodies of
+    // contact pairs on their masters, along Gamma_C's mean normal
     double contact_force = 0.;
-    // the force of the foundation on the body, a vector
+    // the force of the foundation on the body, a vector (a load of the
+    // mesh; the forces of contact pairs are inside it)
     std::array<double, 3> resultant{};
+    // contact pairs: the forces on the slave and on the master bodies,
+    // -sum_s m_s (l1_s n_s + T_s l2_s) and its sum_j c_sj shares
+    std::array<double, 3> on_slave_body{};
+    std::array<double, 3> on_master_body{};
     double                tangential_force =
       0.;                     // |sum_s m_s T_s l2_s| in the mean tangent plane
     double max_pressure = 0.; // max_s l1_s

@@ -46,10 +46,34 @@ namespace dualcontact
                 const double               length,
                 const std::vector<double> &times = {});
 
+  /**
+   * The bodies of a mesh: the connected components of its coarse mesh
+   * (cells that share a vertex), which every rank holds whole, one number
+   * per coarse cell (the smallest coarse cell in its body).
+   */
+  template <int dim>
+  std::vector<unsigned int>
+  bodies_of_coarse_cells(const Triangulation<dim> &triangulation);
+
+  /** The body of a cell: its coarse ancestor's. */
+  template <int dim, typename Iterator>
+  unsigned int
+  body_of(const Iterator &cell, const std::vector<unsigned int> &bodies)
+  {
+    typename Triangulation<dim>::cell_iterator coarse = cell;
+    while (coarse->level() > 0)
+      coarse = coarse->parent();
+    return bodies[coarse->index()];
+  }
+
   /** What a scene calls for; the solver composes only these. */
   struct Effects
   {
-    bool contact = false;
+    // contact of any kind: with the obstacle, or between bodies
+    bool contact          = false;
+    bool obstacle_contact = false;
+    // the contact pairs, 'slave id on master id, ...'; empty if none
+    std::string pairs;
     // the friction law, chosen once from <Friction/Law>; frictionless
     // ('none') also when the scene asked for friction whose coefficient or
     // threshold is zero (zero_friction: the log says so)
@@ -151,6 +175,26 @@ namespace dualcontact
     effects() const
     {
       return effects_;
+    }
+
+    /** The contact pairs between bodies: slave id -> master id. */
+    const std::map<types::boundary_id, types::boundary_id> &
+    contact_pairs() const
+    {
+      return parameters.boundary.contact_pairs;
+    }
+
+    /**
+     * The ids whose faces carry contact nodes: those of the condition
+     * 'contact', and the slave ids of the contact pairs.
+     */
+    std::set<types::boundary_id>
+    contact_ids() const
+    {
+      auto ids = ids_with(BoundaryCondition::contact);
+      for (const auto &[slave, master] : contact_pairs())
+        ids.insert(slave);
+      return ids;
     }
 
     /** Boundary ids carrying each condition. */

@@ -129,6 +129,18 @@ namespace dualcontact
       "lambda, mu; commas only inside parentheses (if(t <= 1, t, 1)). A "
       "pressure p on a face with outer normal n is the traction -p n. Every "
       "'traction' id must be listed.");
+    declarer.declare_entry(
+      "Contact pairs",
+      "",
+      id_map_pattern(EntryPattern::whole_number(0, 255)),
+      "Contact between two bodies of the mesh, as 'slave id: master id': the "
+      "faces with the slave id carry the contact nodes and multipliers, the "
+      "faces with the master id are the other body's surface they may touch "
+      "(dual mortar, small sliding, paired in the reference configuration). "
+      "Both ids keep the condition 'free' in 'Conditions', lie on different "
+      "bodies (parts of the mesh that share no vertex), and an id belongs to "
+      "one pair only. The friction law of subsection Friction holds on every "
+      "pair as on the obstacle's 'contact' ids.");
     declarer.leave_subsection();
   }
 
@@ -144,6 +156,12 @@ namespace dualcontact
                                  "Boundary conditions/Displacements");
     tractions =
       parse_id_map(prm.get("Tractions"), "Boundary conditions/Tractions");
+    contact_pairs.clear();
+    for (const auto &[slave, master] :
+         parse_id_map(prm.get("Contact pairs"),
+                      "Boundary conditions/Contact pairs"))
+      contact_pairs[slave] =
+        static_cast<boundary_id>(Utilities::string_to_int(master));
     prm.leave_subsection();
   }
 
@@ -152,11 +170,13 @@ namespace dualcontact
   {
     const GeometryParameters &geometry = parameters.geometry;
     const unsigned int        dim      = geometry.dimension;
-    const unsigned int        n_ids = geometry.type == GeometryType::rectangle ?
-                                        2 * dim :
-                                      geometry.type == GeometryType::quarter_disc ? 3 :
-                                                                                    2;
-    const std::string         shape = to_string(geometry.type);
+    const unsigned int        n_ids =
+      geometry.type == GeometryType::rectangle      ? 2 * dim :
+             geometry.type == GeometryType::two_blocks     ? 2 * dim + 2 :
+             geometry.type == GeometryType::two_half_discs ? 4 :
+             geometry.type == GeometryType::quarter_disc   ? 3 :
+                                                             2;
+    const std::string shape = to_string(geometry.type);
     // a mesh file's ids are checked once it is read (Scene)
     for (const auto &[id, condition] : conditions)
       if (geometry.type != GeometryType::mesh_file && id >= n_ids)
@@ -166,6 +186,54 @@ namespace dualcontact
                            shape + "' does not have (its ids are 0 to " +
                            std::to_string(n_ids - 1) + ").",
                          exit_inconsistent);
+
+    // the mortar segments are intervals: 2D, and straight faces with a
+    // linear trace (doc/two_bodies.md)
+    if (!contact_pairs.empty() &&
+        (dim != 2 || parameters.discretization.degree != 1))
+      throw InputError("The entry <Boundary conditions/Contact pairs> couples "
+                       "two bodies in 2D with elements of degree 1: set "
+                       "<Geometry/Dimension> to 2 and <Discretization/"
+                       "Polynomial degree> to 1, or put a rigid obstacle "
+                       "in its place.",
+                       exit_inconsistent);
+    // a pair: two different ids of the geometry, both free (the pair is
+    // their condition), each in one pair only
+    std::map<boundary_id, unsigned int> in_pairs;
+    for (const auto &[slave, master] : contact_pairs)
+      {
+        const std::string pair = "The entry <Boundary conditions/Contact "
+                                 "pairs> pairs " +
+                                 std::to_string(slave) + ": " +
+                                 std::to_string(master);
+        if (slave == master)
+          throw InputError(pair + ", one id with itself: a pair couples the "
+                                  "surfaces of two bodies.",
+                           exit_inconsistent);
+        for (const boundary_id id : {slave, master})
+          {
+            if (geometry.type != GeometryType::mesh_file && id >= n_ids)
+              throw InputError(pair + ", but the geometry '" + shape +
+                                 "' has no boundary id " + std::to_string(id) +
+                                 " (its ids are 0 to " +
+                                 std::to_string(n_ids - 1) + ").",
+                               exit_inconsistent);
+            if (condition(id) != BoundaryCondition::free)
+              throw InputError(pair +
+                                 ", but <Boundary conditions/"
+                                 "Conditions> gives id " +
+                                 std::to_string(id) + " the condition '" +
+                                 to_string(condition(id)) +
+                                 "': a pair's ids are free there.",
+                               exit_inconsistent);
+            if (++in_pairs[id] > 1)
+              throw InputError("The entry <Boundary conditions/Contact "
+                               "pairs> names boundary id " +
+                                 std::to_string(id) +
+                                 " in two pairs: an id belongs to one pair.",
+                               exit_inconsistent);
+          }
+      }
 
     const auto check_data = [&](const std::map<boundary_id, std::string> &data,
                                 const BoundaryCondition wanted,

@@ -74,9 +74,8 @@ namespace dualcontact
   std::vector<IneffectiveRule>
   ExactSolutionParameters::ineffective_rules(const Parameters &parameters) const
   {
-    const bool contact =
-      !parameters.boundary.ids_with(BoundaryCondition::contact).empty();
-    const std::string &law = parameters.friction.law;
+    const bool         contact = parameters.boundary.has_contact();
+    const std::string &law     = parameters.friction.law;
     return {{!contact,
              "Exact solution",
              {"Contact pressure",

@@ -142,10 +142,11 @@ namespace dualcontact
   void
   FrictionParameters::check(const Parameters &parameters) const
   {
-    if (parameters.boundary.ids_with(BoundaryCondition::contact).empty() &&
+    if (!parameters.boundary.has_contact() &&
         create_friction_law(law)->has_friction())
       throw InputError("The entry <Friction/Law> asks for friction, but no "
-                       "boundary id has the condition 'contact'.",
+                       "boundary id has the condition 'contact' and there "
+                       "is no <Boundary conditions/Contact pairs>.",
                        exit_inconsistent);
     check_friction_entries(*this, parameters.given);
   }

@@ -120,6 +120,8 @@ namespace dualcontact
       {GeometryType::rectangle, "rectangle"},
       {GeometryType::half_disc, "half disc"},
       {GeometryType::quarter_disc, "quarter disc"},
+      {GeometryType::two_blocks, "two blocks"},
+      {GeometryType::two_half_discs, "two half discs"},
       {GeometryType::mesh_file, "mesh file"}};
     return table;
   }
@@ -174,7 +176,21 @@ namespace dualcontact
       "the given radius and centre, with boundary ids 0 (the curved part) "
       "and 1 (the flat top); refinement follows the circle. 'quarter disc' "
       "(2D): the lower right quarter (x >= x_c, y <= y_c) with ids 0 (curved), "
-      "1 (flat top) and 2 (the symmetry line x = x_c). 'mesh file': the "
+      "1 (flat top) and 2 (the symmetry line x = x_c). 'two blocks': the "
+      "rectangle's box cut at half its height (2D: y, 3D: z) into two bodies "
+      "whose meshes need not match across the cut (<Geometry/Subdivisions> "
+      "for the lower, <Geometry/Upper subdivisions> for the upper block), "
+      "with the rectangle's ids on the outside (the lower block's bottom "
+      "2 in 2D, 4 in 3D; the upper block's top 3, 5) and on the cut the ids "
+      "4 (2D; 6 in 3D) for the lower block's top and 5 (7) for the upper "
+      "block's bottom, material id 0 for the lower and 1 for the upper "
+      "block: a pair for <Boundary conditions/Contact pairs>. 'two half "
+      "discs': two bodies that touch at <Geometry/Center>, the lower half of "
+      "a disc (ball) of <Geometry/Radius> above it (material id 1; ids 0 on "
+      "its curved part, 1 on its flat top) and the upper half of one of "
+      "<Geometry/Lower radius> below it (material id 0; ids 2 curved, 3 flat "
+      "bottom): Hertz's problem of two cylinders (spheres) as a pair '0: "
+      "2'. 'mesh file': the "
       "coarse mesh of <Geometry/Mesh file> (Gmsh: quadrilaterals or "
       "triangles in 2D, hexahedra or tetrahedra in 3D), whose physical "
       "groups are the boundary ids; "
@@ -240,7 +256,15 @@ namespace dualcontact
       "1, 1",
       EntryPattern::list(EntryPattern::whole_number(1), 2, 3),
       "Rectangle: number of cells of the coarse mesh in each "
-      "direction [-] (3D default: 1, 1, 1).");
+      "direction [-] (3D default: 1, 1, 1). Two blocks: those of the lower "
+      "block.");
+    declarer.declare_entry(
+      "Upper subdivisions",
+      "1, 1",
+      EntryPattern::list(EntryPattern::whole_number(1), 2, 3),
+      "Two blocks: number of cells of the upper block's coarse mesh in each "
+      "direction [-] (3D default: 1, 1, 1); across the cut they need not "
+      "match the lower block's.");
     declarer.declare_entry(
       "Center",
       "0, 0",
@@ -252,7 +276,13 @@ namespace dualcontact
     declarer.declare_entry("Radius",
                            "1",
                            EntryPattern::number(0.),
-                           "Half disc: radius R [length]. Must be positive.");
+                           "Half disc: radius R [length]. Must be positive. "
+                           "Two half discs: the upper body's radius.");
+    declarer.declare_entry("Lower radius",
+                           "1",
+                           EntryPattern::number(0.),
+                           "Two half discs: the lower body's radius "
+                           "[length]. Must be positive.");
     declarer.declare_entry(
       "Pre-refinement steps",
       "0",
@@ -261,7 +291,10 @@ namespace dualcontact
       "the surface of subsection Obstacle) are refined before the first cycle "
       "(after the initial global refinement) [-]. A cell counts as near if "
       "one of its vertices lies within 'Pre-refinement distance' of the "
-      "obstacle in its prescribed position (after <Obstacle/Displacement>).");
+      "obstacle in its prescribed position (after <Obstacle/Displacement>). "
+      "In a scene whose only contact is between bodies (<Boundary "
+      "conditions/Contact pairs>), near means within that distance of a "
+      "vertex of another body's paired surface.");
     declarer.declare_entry("Pre-refinement distance",
                            "0",
                            EntryPattern::number(0.),
@@ -292,8 +325,13 @@ namespace dualcontact
     for (const int n : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Subdivisions"), ',')))
       subdivisions.push_back(n);
+    upper_subdivisions.clear();
+    for (const int n : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("Upper subdivisions"), ',')))
+      upper_subdivisions.push_back(n);
     center                  = parse_doubles(prm.get("Center"));
     radius                  = prm.get_double("Radius");
+    lower_radius            = prm.get_double("Lower radius");
     pre_refinement_steps    = prm.get_integer("Pre-refinement steps");
     pre_refinement_distance = prm.get_double("Pre-refinement distance");
     pre_refinement_grading  = prm.get_double("Pre-refinement grading");
@@ -304,11 +342,17 @@ namespace dualcontact
     // the patterns allow 0 (Patterns::Double has closed bounds), which
     // would fail late, inside deal.II's mesh or manifold code
     if ((type == GeometryType::half_disc ||
-         type == GeometryType::quarter_disc) &&
+         type == GeometryType::quarter_disc ||
+         type == GeometryType::two_half_discs) &&
         !(radius > 0.))
       throw InputError("The entry <Geometry/Radius> must be positive: a " +
                          to_string(type) + " of radius " + number_text(radius) +
                          " has no area.",
+                       exit_invalid_value);
+    if (type == GeometryType::two_half_discs && !(lower_radius > 0.))
+      throw InputError("The entry <Geometry/Lower radius> must be positive: a "
+                       "half disc of radius " +
+                         number_text(lower_radius) + " has no area.",
                        exit_invalid_value);
     if (pre_refinement_steps > 1 && !(pre_refinement_grading > 0.))
       throw InputError("The entry <Geometry/Pre-refinement grading> must be "
@@ -321,12 +365,17 @@ namespace dualcontact
   GeometryParameters::check(const Parameters &parameters) const
   {
     const unsigned int dim = dimension;
-    if (type == GeometryType::rectangle)
+    if (is_box(type))
       {
         need_values(lower_left, "Geometry/Lower left corner", dim);
         need_values(upper_right, "Geometry/Upper right corner", dim);
         if (subdivisions.size() != dim)
           throw InputError("The entry <Geometry/Subdivisions> needs " +
+                             std::to_string(dim) + " values.",
+                           exit_inconsistent);
+        if (type == GeometryType::two_blocks &&
+            upper_subdivisions.size() != dim)
+          throw InputError("The entry <Geometry/Upper subdivisions> needs " +
                              std::to_string(dim) + " values.",
                            exit_inconsistent);
         for (unsigned int d = 0; d < dim; ++d)
@@ -376,6 +425,12 @@ namespace dualcontact
           }
       }
 
+    if (type == GeometryType::two_half_discs && cell_kind == CellKind::simplex)
+      throw InputError("The entry <Geometry/Type> 'two half discs' is made "
+                       "of quadrilaterals (hexahedra): set <Geometry/Cell "
+                       "type> to 'quadrilateral', or read two bodies of "
+                       "triangles from a mesh file.",
+                       exit_inconsistent);
     if (type == GeometryType::quarter_disc && dim != 2)
       throw InputError("The entry <Geometry/Type> 'quarter disc' exists in 2D "
                        "only.",
@@ -386,8 +441,7 @@ namespace dualcontact
   GeometryParameters::check_magnitudes() const
   {
     const std::string lengths = "e.g. mm or km instead of m";
-    if (type == GeometryType::rectangle &&
-        lower_left.size() == upper_right.size())
+    if (is_box(type) && lower_left.size() == upper_right.size())
       for (std::size_t d = 0; d < lower_left.size(); ++d)
         {
           check_magnitude(upper_right[d] - lower_left[d],
@@ -447,10 +501,19 @@ namespace dualcontact
                                    "expressions that use x, y, z).",
                          exit_invalid_value);
     };
-    if (type == GeometryType::half_disc || type == GeometryType::quarter_disc)
+    if (type == GeometryType::half_disc || type == GeometryType::quarter_disc ||
+        type == GeometryType::two_half_discs)
       {
         check_magnitude(radius, "Geometry/Radius", "[length]", lengths);
         curved(radius, center, "Geometry/Radius");
+      }
+    if (type == GeometryType::two_half_discs)
+      {
+        check_magnitude(lower_radius,
+                        "Geometry/Lower radius",
+                        "[length]",
+                        lengths);
+        curved(lower_radius, center, "Geometry/Lower radius");
       }
     if (type == GeometryType::mesh_file)
       for (const BoundaryManifold &manifold : manifolds)
@@ -460,11 +523,11 @@ namespace dualcontact
   void
   GeometryParameters::check_pre_refinement(const Parameters &parameters) const
   {
-    if (pre_refinement_steps > 0 &&
-        parameters.boundary.ids_with(BoundaryCondition::contact).empty())
+    if (pre_refinement_steps > 0 && !parameters.boundary.has_contact())
       throw InputError("The entry <Geometry/Pre-refinement steps> refines "
-                       "toward the foundation, but the scene has no contact "
-                       "boundary.",
+                       "toward the foundation (or the contact pairs), but "
+                       "the scene has no contact boundary and no contact "
+                       "pair.",
                        exit_inconsistent);
   }
 
@@ -472,12 +535,11 @@ namespace dualcontact
   GeometryParameters::check_simplices(const Parameters  &parameters,
                                       const std::string &why)
   {
-    const unsigned int dim    = parameters.geometry.dimension;
-    const unsigned int degree = parameters.discretization.degree;
-    const bool         contact =
-      !parameters.boundary.ids_with(BoundaryCondition::contact).empty();
-    const std::string simplices = dim == 2 ? "triangles" : "tetrahedra";
-    const std::string head =
+    const unsigned int dim       = parameters.geometry.dimension;
+    const unsigned int degree    = parameters.discretization.degree;
+    const bool         contact   = parameters.boundary.has_contact();
+    const std::string  simplices = dim == 2 ? "triangles" : "tetrahedra";
+    const std::string  head =
       "The mesh is made of " + simplices + " (" + why + "), and deal.II 9.4 ";
     if (degree > 2)
       throw InputError(head + "has FE_SimplexP of degree 1 and 2 only: set "
@@ -515,7 +577,7 @@ namespace dualcontact
   std::vector<IneffectiveRule>
   GeometryParameters::ineffective_rules(const Parameters &) const
   {
-    const bool rectangle = type == GeometryType::rectangle;
+    const bool rectangle = is_box(type);
     const bool mesh      = type == GeometryType::mesh_file;
     return {{rectangle || mesh,
              "Geometry",
@@ -532,6 +594,16 @@ namespace dualcontact
              {"Lower left corner", "Upper right corner", "Subdivisions"},
              "<Geometry/Type> is " + quoted(to_string(type)) +
                " (it is for the rectangle)"},
+            {type != GeometryType::two_blocks,
+             "Geometry",
+             {"Upper subdivisions"},
+             "<Geometry/Type> is " + quoted(to_string(type)) +
+               " (it is for 'two blocks')"},
+            {type != GeometryType::two_half_discs,
+             "Geometry",
+             {"Lower radius"},
+             "<Geometry/Type> is " + quoted(to_string(type)) +
+               " (it is for 'two half discs')"},
             {pre_refinement_steps == 0,
              "Geometry",
              {"Pre-refinement distance", "Pre-refinement grading"},

@@ -37,6 +37,22 @@ namespace dualcontact
                            EntryPattern::number(-1., 0.5),
                            "Poisson's ratio nu [-], in (-1, 0.5). 2D is plane "
                            "strain.");
+    declarer.declare_entry(
+      "Materials by id",
+      "",
+      EntryPattern::map(EntryPattern::whole_number(0, 254),
+                        EntryPattern::list(EntryPattern::number(), 2, 2),
+                        0,
+                        dealii::Patterns::Map::max_int_value,
+                        ";"),
+      "The bodies of other materials, as 'material id: E, nu' separated by "
+      "';', e.g. '1: 3000, 0.3; 2: 500, 0.25' (E [stress], nu [-] as "
+      "above). The cells with an id listed take "
+      "its E and nu, those with id 0 <Young's modulus> and <Poisson's ratio>; "
+      "once the list is not empty, a cell of any other id is an error. "
+      "Material ids come from the geometry ('two blocks': 0 for the lower, 1 "
+      "for the upper block) or a mesh file (Gmsh's physical groups of "
+      "surfaces in 2D, volumes in 3D). Empty: one material everywhere.");
     declarer.leave_subsection();
   }
 
@@ -46,6 +62,39 @@ namespace dualcontact
     prm.enter_subsection("Material");
     youngs_modulus = prm.get_double("Young's modulus");
     poissons_ratio = prm.get_double("Poisson's ratio");
+    by_id.clear();
+    {
+      for (const std::string &item :
+           Utilities::split_string_list(prm.get("Materials by id"), ';'))
+        {
+          const auto colon  = item.find(':');
+          const int  id     = Utilities::string_to_int(item.substr(0, colon));
+          const auto values = parse_doubles(item.substr(colon + 1));
+          const std::string entry = "Material/Materials by id";
+          if (values.size() != 2)
+            throw InputError("The entry <" + entry + "> gives material id " +
+                               std::to_string(id) + " " +
+                               std::to_string(values.size()) +
+                               " numbers: it takes 'id: E, nu'.",
+                             exit_invalid_value);
+          if (!by_id.emplace(id, std::make_pair(values[0], values[1])).second)
+            throw InputError("The entry <" + entry + "> names material id " +
+                               std::to_string(id) + " twice.",
+                             exit_inconsistent);
+          if (!(values[0] > 0.))
+            throw InputError("The entry <" + entry + "> gives material id " +
+                               std::to_string(id) + " the Young's modulus " +
+                               format_number(values[0]) +
+                               ": it must be positive.",
+                             exit_invalid_value);
+          if (!(values[1] > -1. && values[1] < 0.5))
+            throw InputError("The entry <" + entry + "> gives material id " +
+                               std::to_string(id) + " the Poisson's ratio " +
+                               format_number(values[1]) +
+                               ": it must lie in the open interval (-1, 0.5).",
+                             exit_invalid_value);
+        }
+    }
     prm.leave_subsection();
     // Patterns::Double has closed bounds; the open ends are checked here.
     if (!(youngs_modulus > 0.))

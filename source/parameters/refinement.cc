@@ -109,8 +109,7 @@ namespace dualcontact
   std::vector<IneffectiveRule>
   RefinementParameters::ineffective_rules(const Parameters &parameters) const
   {
-    const bool contact =
-      !parameters.boundary.ids_with(BoundaryCondition::contact).empty();
+    const bool                   contact  = parameters.boundary.has_contact();
     const bool                   one_mesh = n_cycles == 1;
     const std::string            never = "<Refinement/Number of cycles> is 1, "
                                          "so the mesh is never refined";

@@ -211,9 +211,8 @@ namespace dualcontact
   std::vector<IneffectiveRule>
   SolverParameters::ineffective_rules(const Parameters &parameters) const
   {
-    const bool contact =
-      !parameters.boundary.ids_with(BoundaryCondition::contact).empty();
-    const std::string &law = parameters.friction.law;
+    const bool         contact = parameters.boundary.has_contact();
+    const std::string &law     = parameters.friction.law;
     return {{contact && create_friction_law(law)->parameter_entry().empty(),
              "Solver",
              {"Tangential augmentation parameter"},

@@ -49,19 +49,26 @@ namespace dualcontact
       const FEValuesExtractors::Vector     displacement(0);
       std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
       std::vector<Tensor<1, dim>>          lambda(quadrature.size());
-      const double                         E      = material.youngs_modulus;
-      const double                         lame_l = material.lambda();
-      const double                         lame_m = material.mu();
+      const auto &pairs = input.parameters.boundary.contact_pairs;
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            double sum = 0.;
+            // the cell's material (<Material/Materials by id>)
+            const MaterialParameters here   = material.of(cell->material_id());
+            const double             E      = here.youngs_modulus;
+            const double             lame_l = here.lambda();
+            const double             lame_m = here.mu();
+            double                   sum    = 0.;
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
                   contact_ids.count(cell->face(f)->boundary_id()))
                 {
                   fe_face.reinit(cell, f);
+                  // the multipliers act along the obstacle's normal, or on
+                  // a pair's slave side along the body's own
+                  const bool paired =
+                    pairs.count(cell->face(f)->boundary_id()) > 0;
                   fe_face[displacement].get_function_symmetric_gradients(
                     solution, strain);
                   fe_face[displacement].get_function_values(multipliers,
@@ -75,8 +82,10 @@ namespace dualcontact
                           unit_symmetric_tensor<dim>() +
                         2. * lame_m * strain[q];
                       // lambda[q]: (l1, l2_1, .., l2_{dim-1}) interpolated
+                      const Tensor<1, dim> nu = fe_face.normal_vector(q);
                       const auto [n, t] =
-                        contact.basis_at(fe_face.quadrature_point(q));
+                        paired ? std::make_pair(nu, tangent_basis(nu)) :
+                                 contact.basis_at(fe_face.quadrature_point(q));
                       Tensor<1, dim> residual =
                         stress * fe_face.normal_vector(q) + lambda[q][0] * n;
                       for (unsigned int k = 0; k < dim - 1; ++k)

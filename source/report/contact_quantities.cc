@@ -474,7 +474,7 @@ namespace dualcontact
       static bool
       has(const Parameters &parameters, const Scene<dim> &scene)
       {
-        return scene.effects().contact &&
+        return scene.effects().obstacle_contact &&
                (scene.effects().friction_law().has_friction() ||
                 scene.obstacle_moves() ||
                 parameters.load_path.step_times().size() > 1);
@@ -494,5 +494,67 @@ namespace dualcontact
 
     const bool obstacle_force_registered =
       register_report_quantity<ObstacleForce>("obstacle force");
+
+    /**
+     * Contact pairs: slave_body_force_x, _y (_z) and master_body_force_x,
+     * _y (_z), the contact forces on the slave and on the master bodies
+     * (doc/two_bodies.md), equal and opposite.
+     */
+    template <int dim>
+    class PairForces : public ReportQuantity<dim>
+    {
+    public:
+      using ReportQuantity<dim>::ReportQuantity;
+
+      static bool
+      has(const Parameters &, const Scene<dim> &scene)
+      {
+        return !scene.contact_pairs().empty();
+      }
+
+      void
+      csv_entries(const CycleResult &r, TableEntries &t) const override
+      {
+        const char *axes[] = {"x", "y", "z"};
+        for (unsigned int c = 0; c < dim; ++c)
+          t.add(470,
+                std::string("slave_body_force_") + axes[c],
+                r.zone.on_slave_body[c]);
+        for (unsigned int c = 0; c < dim; ++c)
+          t.add(480,
+                std::string("master_body_force_") + axes[c],
+                r.zone.on_master_body[c]);
+      }
+
+      void
+      print(const CycleResult &r, ScreenLines &lines) const override
+      {
+        std::string slave, master;
+        double      sum = 0., size = 0.;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            slave +=
+              (c == 0 ? "(" : ", ") + significant(r.zone.on_slave_body[c]);
+            master +=
+              (c == 0 ? "(" : ", ") + significant(r.zone.on_master_body[c]);
+            sum +=
+              std::pow(r.zone.on_slave_body[c] + r.zone.on_master_body[c], 2);
+            size += std::pow(r.zone.on_slave_body[c], 2);
+          }
+        lines.add(45,
+                  wrap("   contact pairs: ",
+                       {"force on the slave bodies " + slave + ")",
+                        "on the master bodies " + master + ")",
+                        "their sum " +
+                          scientific(size > 0. ? std::sqrt(sum / size) : 0.,
+                                     1) +
+                          " of either (relative)"},
+                       ", ",
+                       "     "));
+      }
+    };
+
+    const bool pair_forces_registered =
+      register_report_quantity<PairForces>("contact pair forces");
   } // namespace
 } // namespace dualcontact

@@ -86,6 +86,21 @@ namespace dualcontact_test
 
   using Run = SceneRun<2>;
 
+  /**
+   * The largest spacing of the contact nodes with |s| < within (2D), all
+   * ranks': the contact element there.
+   */
+  inline double
+  largest_spacing(const Run &run, const double within)
+  {
+    const auto nodes   = run.pressures();
+    double     element = 0.;
+    for (std::size_t i = 1; i < nodes.size(); ++i)
+      if (std::abs(nodes[i].first) < within)
+        element = std::max(element, nodes[i].first - nodes[i - 1].first);
+    return element;
+  }
+
   // prm/patch.prm (E = 1000, nu = 0, the block [0, 2] x [0, 1]) turned into
   // the 2D twin of prm/patch_3d.prm: the uniform stress sigma_yy = -1,
   // sigma_xy = 0.2 (tractions (0.2, -1) on the top, (0, -+0.2) on the

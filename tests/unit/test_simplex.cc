@@ -33,21 +33,6 @@ namespace
            std::to_string(degree) + "\nend\n";
   }
 
-  /**
-   * The largest spacing of the contact nodes with |s| < within (2D), all
-   * ranks': the contact element there.
-   */
-  double
-  largest_spacing(const Run &run, const double within)
-  {
-    const auto nodes   = run.pressures();
-    double     element = 0.;
-    for (std::size_t i = 1; i < nodes.size(); ++i)
-      if (std::abs(nodes[i].first) < within)
-        element = std::max(element, nodes[i].first - nodes[i - 1].first);
-    return element;
-  }
-
   const std::string one_mesh =
     "subsection Refinement\n  set Number of cycles = 1\nend\n";
 
