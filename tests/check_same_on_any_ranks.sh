@@ -18,6 +18,8 @@
 #   1 rank and 488 on 2.
 # - simplices_same_on_any_ranks: prm/hertz_friction.prm on triangles, whose
 #   mesh every rank holds whole and partitions by itself.
+# - pairs_same_on_any_ranks: prm/two_cylinders.prm, two bodies in contact,
+#   graded and refined adaptively.
 set -euo pipefail
 program="$1"
 mpirun="$2"

@@ -46,7 +46,9 @@ namespace dualcontact
     types::global_dof_index n_contact_nodes   = 0;
     types::global_dof_index n_hanging_contact = 0; // on Gamma_C, all ranks
     unsigned int            n_corner_contact = 0; // beside an obstacle's corner
-    double                  r                = 0.; // augmentation used
+    // slave nodes of contact pairs that face no master: no contact nodes
+    types::global_dof_index n_uncovered = 0;
+    double                  r           = 0.; // augmentation used
     double                  r_t = 0.; // tangential augmentation (with friction)
     double                  chi = 0.; // proximal weight used
     // the applied load toward the foundation (tractions and body force;

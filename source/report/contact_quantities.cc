@@ -131,6 +131,11 @@ namespace dualcontact
             "   " + count(solve.n_hanging_contact) +
               " hanging nodes on Gamma_C (no contact condition of their "
               "own)\n");
+        if (solve.n_uncovered > 0)
+          lines.add(82,
+                    "   " + count(solve.n_uncovered) +
+                      " nodes of the slave surfaces face no master surface "
+                      "(no contact nodes)\n");
         if (solve.n_corner_contact > 0)
           lines.add(85,
                     "   " +

@@ -65,6 +65,7 @@ TEST_CASE("The contact patch test between two bodies on non-matching meshes "
             // the upper block's 7 (14) cells: 8 (15) slave nodes, all facing
             // the master
             CHECK(r.solve.n_contact_nodes == 7 * (1u << r.mesh.cycle) + 1);
+            CHECK(r.solve.n_uncovered == 0);
             CHECK(r.solve.n_active == r.solve.n_contact_nodes);
             CHECK(r.errors.error_L2 <= 1e-8 * r.errors.norm_L2);
             // the load p times the width 2 crosses the interface, and the
@@ -157,6 +158,8 @@ TEST_CASE("Hertz, two cylinders (prm/two_cylinders.prm): identical, then E2 "
                    << r.zone.edge_half_width << " (element " << element
                    << "), pressure error " << r.zone.pressure_error);
       CHECK(r.mesh.n_dofs <= 100000);
+      // the slave half circle beyond 60 degrees faces no master segment
+      CHECK(r.solve.n_uncovered > 0);
       CHECK(std::abs(r.zone.peak_pressure_error) <= 0.01);
       CHECK(element > 0.);
       CHECK(std::abs(r.zone.edge_half_width - 0.1) <= element);
