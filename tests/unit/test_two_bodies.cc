@@ -1,9 +1,12 @@
 // Two bodies in contact (<Boundary conditions/Contact pairs>, dual mortar):
 // the contact patch test on non-matching meshes, frictionless and all
-// stick, and the refusals of a pair that cannot be one. Every assertion is
-// on a value reduced over all ranks.
+// stick, Hertz's two cylinders, the same from a Gmsh file, Cattaneo-Mindlin
+// and Mindlin-Deresiewicz between identical cylinders (tagged [path] as
+// well: ctest runs it with the load paths), and the refusals of a pair that
+// cannot be one. Every assertion is on a value reduced over all ranks.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
 
 #include <deal.II/distributed/tria.h>
 
@@ -14,6 +17,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -263,4 +267,132 @@ TEST_CASE("Two bodies read from a Gmsh file, their nodes where they touch "
             Approx(a.zone.pressure_error).epsilon(1e-5));
     }
   remove_directory(directory, MPI_COMM_WORLD);
+}
+
+TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz between two identical "
+          "cylinders at nu = 0.3 with Q1 (beta = 0): stick zones, tractions "
+          "and the energy of a cycle",
+          "[path][pairs]")
+{
+  const Run                       run("two_cylinders_cattaneo.prm", "");
+  const std::vector<CycleResult> &steps = run.problem->steps();
+  REQUIRE(steps.size() == 11);
+  const double F  = 0.3;
+  const double nu = run.parameters.material.poissons_ratio;
+  // two bodies of one material, R1 = R2 = 1
+  const double E_star =
+    run.parameters.material.youngs_modulus / (2. * (1. - nu * nu));
+  const double R_star = 0.5;
+  // Q along the first shear (step 3 is Q*), signed by the clamp's reaction
+  const double sign = steps[2].reactions.on_id.at(1)[0] > 0. ? 1. : -1.;
+  const auto   Q    = [&](const unsigned int n) {
+    return sign * steps[n].reactions.on_id.at(1)[0];
+  };
+  const double P  = steps[0].zone.contact_force;
+  const double a  = std::sqrt(4. * P * R_star / (numbers::PI * E_star));
+  const double p0 = 2. * P / (numbers::PI * a);
+  const double h  = largest_spacing(run, 1.2 * a);
+  INFO("P = " << P << ", a = " << a << ", contact element " << h
+              << ", Q*/(F P) = " << Q(2) / (F * P));
+  CHECK(Q(2) / (F * P) > 0.6);
+  CHECK(h > 0.);
+
+  // q_d(x) = F (p0/a) sqrt(d^2 - x^2), the branches' superpositions
+  const auto q_d = [&](const double x, const double d) {
+    return F * p0 / a * std::sqrt(std::max(d * d - x * x, 0.));
+  };
+  // the turning points: Q* at step 3, -Q* at step 7, Q* at step 11
+  const double c_up   = a * std::sqrt(1. - Q(2) / (F * P));
+  const double c_down = a * std::sqrt(1. + Q(6) / (F * P));
+  for (unsigned int n = 1; n < 11; ++n)
+    {
+      // beta = 0: the shear leaves the normal force as it was
+      CHECK(std::abs(steps[n].zone.contact_force - P) <= 1e-6 * P);
+      double                        c = 0.;
+      std::function<double(double)> q;
+      if (n <= 2) // loading from 0 to Q*
+        {
+          c = a * std::sqrt(1. - Q(n) / (F * P));
+          q = [&, c](double x) { return q_d(x, a) - q_d(x, c); };
+        }
+      else if (n <= 6) // unloading from Q* to -Q*
+        {
+          c = a * std::sqrt(1. - (Q(2) - Q(n)) / (2. * F * P));
+          q = [&, c](double x) {
+            return -q_d(x, a) + 2. * q_d(x, c) - q_d(x, c_up);
+          };
+        }
+      else // reloading from -Q* to Q*
+        {
+          c = a * std::sqrt(1. - (Q(n) - Q(6)) / (2. * F * P));
+          q = [&, c](double x) {
+            return q_d(x, a) - 2. * q_d(x, c) + q_d(x, c_down);
+          };
+        }
+      const double measured = steps[n].zone.stick_half_width;
+      INFO("step " << n + 1 << ": Q/(F P) = " << Q(n) / (F * P)
+                   << ", stick half-width " << measured << " against " << c
+                   << " (" << (measured - c) / h << " contact elements)");
+      CHECK(std::abs(measured - c) <= h);
+
+      // the tangential traction of contact_step_NNN.csv against the
+      // branch's superposition, RMS over |x| < a with the nodal weights
+      std::ostringstream name;
+      name << run.directory << "/contact_step_" << std::setw(3)
+           << std::setfill('0') << n + 1 << ".csv";
+      const CsvFile table(name.str(), run.comm);
+      double        sum = 0., measure = 0.;
+      for (unsigned int i = 0; i < table.rows(); ++i)
+        {
+          const double x = table.value(i, "x");
+          if (std::abs(x) >= a)
+            continue;
+          const double w = table.value(i, "weight");
+          const double e = sign * table.value(i, "l2") - q(x);
+          sum += w * e * e;
+          measure += w;
+        }
+      const double rms = std::sqrt(sum / measure) / (F * p0);
+      INFO("step " << n + 1 << ": RMS traction error " << rms << " F p0");
+      CHECK(measure > 1.9 * a);
+      CHECK(rms <= 0.03);
+      // the forces on the two bodies are equal and opposite
+      for (const unsigned int d : {0u, 1u})
+        CHECK(std::abs(steps[n].zone.on_slave_body[d] +
+                       steps[n].zone.on_master_body[d]) <= 1e-10 * P);
+    }
+
+  // The energy of the cycle Q* -> -Q* -> Q* (steps 3-11): the dissipation
+  // summed over its steps against the work of the loads, the loop of Q
+  // over the clamp's displacement (Simpson's rule on each half cycle's four
+  // equal displacement steps: the branches are smooth between the turning
+  // points), and against the closed form W_2D of doc/theory.md §11.
+  const auto displacement = [&](const unsigned int n) {
+    return sign * steps[n].step.boundary_displacement.at(1)[0];
+  };
+  const auto simpson = [&](const unsigned int i) {
+    const double dx = displacement(i + 1) - displacement(i);
+    return dx / 3. *
+           (Q(i) + 4. * Q(i + 1) + 2. * Q(i + 2) + 4. * Q(i + 3) + Q(i + 4));
+  };
+  const double work = simpson(2) + simpson(6);
+  const double dissipated =
+    steps[10].step.dissipation_total - steps[2].step.dissipation_total;
+  // W_2D = 16 F^2 p0^2 / (E* a) int_c^a sqrt(1 - x^2/a^2) S(x) dx, the
+  // midpoint rule on 20000 intervals
+  const double       c           = c_up;
+  double             integral    = 0.;
+  const unsigned int n_intervals = 20000;
+  for (unsigned int k = 0; k < n_intervals; ++k)
+    {
+      const double x = c + (a - c) * (k + 0.5) / n_intervals;
+      const double r = std::sqrt(x * x - c * c);
+      const double S = 0.5 * (x * r - c * c * std::log((x + r) / c));
+      integral += std::sqrt(1. - x * x / (a * a)) * S * (a - c) / n_intervals;
+    }
+  const double closed_form = 16. * F * F * p0 * p0 / (E_star * a) * integral;
+  INFO("dissipated over the cycle " << dissipated << ", work of the loads "
+                                    << work << ", closed form " << closed_form);
+  CHECK(std::abs(work - dissipated) <= 0.02 * dissipated);
+  CHECK(std::abs(dissipated - closed_form) <= 0.05 * closed_form);
 }
