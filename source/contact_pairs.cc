@@ -4,6 +4,7 @@
 // pair, and the parallel pieces the coupling needs (the master entries of a
 // vector, the Newton matrix's extra entries).
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/fe/fe.h>
 
@@ -161,8 +162,9 @@ namespace dualcontact
     const Scene<dim>                                            &scene,
     const std::map<types::global_dof_index, types::boundary_id> &slave_id_of)
   {
-    has_pairs_  = !scene.contact_pairs().empty();
-    n_uncovered = 0;
+    has_pairs_   = !scene.contact_pairs().empty();
+    n_uncovered  = 0;
+    pairing_time = 0.;
     if (!has_pairs_)
       return;
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
@@ -170,6 +172,8 @@ namespace dualcontact
                 ExcMessage("Contact pairs are built for degree 1 in 2D."));
     const std::vector<unsigned int> body_of_coarse_cell =
       bodies_of_coarse_cells(dof_handler.get_triangulation());
+    const bool node_to_segment = scene.pairs_node_to_segment();
+    Timer      timer(comm, /*sync_lap_times=*/true);
 
     std::vector<bool>       keep(nodes.size(), true);
     types::global_dof_index uncovered = 0;
@@ -239,7 +243,12 @@ namespace dualcontact
         const auto                                            slave_segments =
           segments<dim>(slave_faces, slave_number, slave_dofs, slave_points);
         const mortar::Coupling coupling =
-          mortar::couple(slave_segments, slave_number.size(), master_segments);
+          node_to_segment ? mortar::couple_node_to_segment(slave_segments,
+                                                           slave_number.size(),
+                                                           master_segments) :
+                            mortar::couple(slave_segments,
+                                           slave_number.size(),
+                                           master_segments);
 
         // the nodes of this pair: their masters, c_sj = M_sj / sum_j M_sj
         // (a node beyond the master's end sees a part of it; its gap is
@@ -343,6 +352,8 @@ namespace dualcontact
     relevant.compress();
     ghosted.reinit(owned, relevant, comm);
     owned_copy.reinit(owned, comm);
+    timer.stop();
+    pairing_time = timer.wall_time();
   }
 
   template <int dim>

@@ -581,6 +581,7 @@ namespace dualcontact
     record.n_hanging_contact = contact_set.n_hanging_nodes();
     record.n_corner_contact  = contact_set.n_corner_nodes();
     record.n_uncovered       = contact_set.n_uncovered_nodes();
+    record.pairing_time      = contact_set.pairing_wall_time();
     // the applied load toward the obstacle, which the contact force
     // balances when nothing else holds the body in that direction (not
     // b . n: b also holds the lifting of prescribed displacements)

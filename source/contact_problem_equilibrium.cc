@@ -36,6 +36,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <numeric>
+#include <set>
 
 namespace dualcontact
 {
@@ -66,6 +68,8 @@ namespace dualcontact
     // part is at most what the friction law can resist. Necessary
     // conditions, checked before solving so that an impossible load never
     // loops (doc/theory.md §8).
+    if (contact_set.has_pairs())
+      check_pair_bodies();
     const Tensor<1, dim> m = -contact_set.normal; // into the body
     LoadBalance          balance;
     Tensor<1, dim>       resultant;
@@ -112,6 +116,145 @@ namespace dualcontact
     if (balance.normal_free && plane)
       check_moment(balance);
     return pressure;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_pair_bodies() const
+  {
+    // A body that no support ('fixed', 'normal fixed') and no obstacle
+    // holds, and that touches the rest through one contact pair only, is
+    // held by that contact alone: its loads must press it onto the other
+    // body, along n_s (the slave nodes' contact direction) if it is the
+    // slave, along -n_s if it is the master. Otherwise the contact would
+    // have to pull, and the iterations would wander with the proximal term.
+    const std::vector<unsigned int> body_of_coarse_cell =
+      bodies_of_coarse_cells(triangulation);
+    const unsigned int n_bodies =
+      1 +
+      *std::max_element(body_of_coarse_cell.begin(), body_of_coarse_cell.end());
+    std::set<types::boundary_id> supports;
+    for (const BoundaryCondition condition :
+         {BoundaryCondition::fixed, BoundaryCondition::normal_fixed})
+      for (const types::boundary_id id : scene.ids_with(condition))
+        supports.insert(id);
+
+    // each owned DoF's body (+1) and component; the bodies' ids and
+    // supports; the loads on each body
+    TrilinosWrappers::MPI::Vector body_plus_one(locally_owned_dofs,
+                                                mpi_communicator);
+    std::vector<unsigned int>     component(locally_owned_dofs.n_elements());
+    std::vector<unsigned int>     held(n_bodies, 0);
+    std::vector<std::set<types::boundary_id>> ids(n_bodies);
+    std::vector<types::global_dof_index>      dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int body = body_of<dim>(cell, body_of_coarse_cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int k = 0; k < dofs.size(); ++k)
+            if (locally_owned_dofs.is_element(dofs[k]))
+              {
+                body_plus_one[dofs[k]] = body + 1.;
+                component[locally_owned_dofs.index_within_set(dofs[k])] =
+                  fe.system_to_component_index(k).first;
+              }
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                ids[body].insert(face->boundary_id());
+                if (supports.count(face->boundary_id()))
+                  held[body] = 1;
+              }
+        }
+    body_plus_one.compress(VectorOperation::insert);
+    std::vector<double> load(n_bodies * dim, 0.);
+    for (unsigned int k = 0; k < locally_owned_dofs.n_elements(); ++k)
+      {
+        const auto i = locally_owned_dofs.nth_index_in_set(k);
+        load[(static_cast<unsigned int>(body_plus_one[i]) - 1) * dim +
+             component[k]] += system_rhs[i];
+      }
+
+    // the direction each body must be pressed along, and the pairs it is
+    // in; an obstacle's contact node holds its body
+    const TrilinosWrappers::MPI::Vector &bodies =
+      contact_set.with_masters(body_plus_one);
+    std::vector<double>       direction(n_bodies * dim, 0.);
+    std::vector<unsigned int> pair_sides(n_bodies * n_bodies, 0);
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      {
+        const ContactNode<dim> &node = contact_set.nodes[s];
+        const unsigned int      slave =
+          static_cast<unsigned int>(bodies[node.dofs[0]]) - 1;
+        if (node.masters.empty())
+          {
+            held[slave] = 1;
+            continue;
+          }
+        const unsigned int master =
+          static_cast<unsigned int>(bodies[node.masters[0].dofs[0]]) - 1;
+        pair_sides[slave * n_bodies + master] = 1;
+        pair_sides[master * n_bodies + slave] = 1;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            direction[slave * dim + c] += node.weight * node.normal[c];
+            direction[master * dim + c] -= node.weight * node.normal[c];
+          }
+      }
+    Utilities::MPI::sum(load, mpi_communicator, load);
+    Utilities::MPI::sum(direction, mpi_communicator, direction);
+    Utilities::MPI::max(held, mpi_communicator, held);
+    Utilities::MPI::max(pair_sides, mpi_communicator, pair_sides);
+
+    double largest = 0.;
+    for (unsigned int b = 0; b < n_bodies; ++b)
+      {
+        double size = 0.;
+        for (unsigned int c = 0; c < dim; ++c)
+          size += load[b * dim + c] * load[b * dim + c];
+        largest = std::max(largest, std::sqrt(size));
+      }
+    for (unsigned int b = 0; b < n_bodies; ++b)
+      {
+        const unsigned int partners =
+          std::accumulate(pair_sides.begin() + b * n_bodies,
+                          pair_sides.begin() + (b + 1) * n_bodies,
+                          0u);
+        if (held[b] || partners != 1)
+          continue;
+        Tensor<1, dim> d, f;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            d[c] = direction[b * dim + c];
+            f[c] = load[b * dim + c];
+          }
+        if (!(d.norm() > 0.))
+          continue;
+        const double toward = f * d / d.norm();
+        if (toward > 0. && toward > 1e-10 * largest)
+          continue;
+        // the body by its boundary ids, as the user knows it
+        std::set<types::boundary_id> all_ids;
+        for (const auto &part : Utilities::MPI::all_gather(
+               mpi_communicator,
+               std::vector<types::boundary_id>(ids[b].begin(), ids[b].end())))
+          all_ids.insert(part.begin(), part.end());
+        std::string names, force;
+        for (const types::boundary_id id : all_ids)
+          names += (names.empty() ? "" : ", ") + std::to_string(id);
+        for (unsigned int c = 0; c < dim; ++c)
+          force += (c == 0 ? "(" : ", ") + format_number(f[c]);
+        throw InputError(
+          "No equilibrium: nothing holds the body with boundary ids " + names +
+            " (no 'fixed' or 'normal fixed' id, no obstacle), and its loads " +
+            force +
+            ") do not press it onto the other body of its contact pair: "
+            "only that contact could hold it, and it can only push. Hold "
+            "the body (<Boundary conditions/Conditions>) or load it toward "
+            "the other body.",
+          exit_no_equilibrium);
+      }
   }
 
   template <int dim>
@@ -268,6 +411,10 @@ namespace dualcontact
   ContactProblem<2>::check_equilibrium() const;
   template double
   ContactProblem<3>::check_equilibrium() const;
+  template void
+  ContactProblem<2>::check_pair_bodies() const;
+  template void
+  ContactProblem<3>::check_pair_bodies() const;
   template void
   ContactProblem<2>::check_moment(const LoadBalance &balance) const;
   template void

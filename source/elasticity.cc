@@ -262,6 +262,17 @@ namespace dualcontact
     Vector<double>                u(n_dofs), r(n_dofs);
     ReactionRecord                record;
     std::array<double, 3>         load{};
+    // the bodies (one unless the mesh has parts that share no vertex):
+    // each owned DoF's body, from a locally owned cell that holds it
+    const IndexSet                 &owned = dof_handler.locally_owned_dofs();
+    const std::vector<unsigned int> body_of_coarse_cell =
+      bodies_of_coarse_cells(dof_handler.get_triangulation());
+    const unsigned int n_bodies =
+      1 +
+      *std::max_element(body_of_coarse_cell.begin(), body_of_coarse_cell.end());
+    std::vector<std::array<double, 3>> load_on_body(n_bodies),
+      reaction_on_body(n_bodies);
+    std::vector<unsigned int> body_of_dof(owned.n_elements(), 0);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -272,6 +283,14 @@ namespace dualcontact
           cell->get_dof_indices(dof_indices);
           residual.add(dof_indices, r);
           local.add_resultant(load);
+          const unsigned int body = body_of<dim>(cell, body_of_coarse_cell);
+          if (n_bodies > 1)
+            {
+              local.add_resultant(load_on_body[body]);
+              for (const types::global_dof_index i : dof_indices)
+                if (owned.is_element(i))
+                  body_of_dof[owned.index_within_set(i)] = body;
+            }
         }
     residual.compress(VectorOperation::add);
     for (unsigned int c = 0; c < dim; ++c)
@@ -285,8 +304,7 @@ namespace dualcontact
     // which makes the reactions, the contact force and the loads balance
     // exactly. A DoF two supports constrain counts for the first ('fixed'
     // before 'normal fixed', the order the constraints were made in).
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
-    IndexSet        relevant;
+    IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     std::set<types::global_dof_index> claimed;
     TrilinosWrappers::MPI::Vector     w(owned, comm),
@@ -321,8 +339,23 @@ namespace dualcontact
                         wi += weight * w_ghosted[j];
                     }
                   sum += wi * residual[i];
+                  reaction_on_body[body_of_dof[owned.index_within_set(i)]][c] +=
+                    wi * residual[i];
                 }
               reaction[c] = Utilities::MPI::sum(sum, comm);
+            }
+        }
+    if (n_bodies > 1)
+      for (unsigned int b = 0; b < n_bodies; ++b)
+        {
+          record.on_body.emplace_back();
+          record.load_on_body.emplace_back();
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              record.on_body[b][c] =
+                Utilities::MPI::sum(reaction_on_body[b][c], comm);
+              record.load_on_body[b][c] =
+                Utilities::MPI::sum(load_on_body[b][c], comm);
             }
         }
     return record;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace dualcontact
@@ -78,6 +79,57 @@ namespace dualcontact
       coupling.master.resize(n_slave_nodes);
       for (unsigned int s = 0; s < n_slave_nodes; ++s)
         coupling.master[s].assign(entries[s].begin(), entries[s].end());
+      return coupling;
+    }
+
+    Coupling
+    couple_node_to_segment(const std::vector<Segment> &slave,
+                           const unsigned int          n_slave_nodes,
+                           const std::vector<Segment> &master)
+    {
+      Coupling coupling;
+      coupling.weight.assign(n_slave_nodes, 0.);
+      coupling.master.resize(n_slave_nodes);
+      std::vector<Point<2>>     position(n_slave_nodes);
+      std::vector<Tensor<1, 2>> normal(n_slave_nodes);
+      for (const Segment &s : slave)
+        for (const unsigned int k : {0u, 1u})
+          {
+            coupling.weight[s.node[k]] += 0.5 * (s.x[1] - s.x[0]).norm();
+            position[s.node[k]] = s.x[k];
+            normal[s.node[k]] += s.normal;
+          }
+      for (unsigned int i = 0; i < n_slave_nodes; ++i)
+        {
+          if (!(normal[i].norm() > 0.))
+            continue;
+          const Tensor<1, 2> n = normal[i] / normal[i].norm();
+          // the nearest facing master segment that the line x_s + t n
+          // crosses, at eta in [0, 1] of it
+          double best = std::numeric_limits<double>::max();
+          for (const Segment &m : master)
+            {
+              if (m.normal.norm() > 0. && n * m.normal >= -0.5)
+                continue;
+              const Tensor<1, 2> along = m.x[1] - m.x[0];
+              // x_s + t n = x_0 + eta along: two equations in t, eta
+              const double det = n[1] * along[0] - n[0] * along[1];
+              if (std::abs(det) <= 1e-14 * along.norm())
+                continue;
+              const Tensor<1, 2> d = m.x[0] - position[i];
+              const double       t = (d[1] * along[0] - d[0] * along[1]) / det;
+              const double       eta = (n[0] * d[1] - n[1] * d[0]) / det;
+              if (eta < -1e-12 || eta > 1. + 1e-12 || std::abs(t) >= best)
+                continue;
+              best           = std::abs(t);
+              const double e = std::clamp(eta, 0., 1.);
+              coupling.master[i].clear();
+              coupling.master[i].emplace_back(m.node[0],
+                                              coupling.weight[i] * (1. - e));
+              coupling.master[i].emplace_back(m.node[1],
+                                              coupling.weight[i] * e);
+            }
+        }
       return coupling;
     }
   } // namespace mortar

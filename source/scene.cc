@@ -532,9 +532,11 @@ namespace dualcontact
               parent[std::max(a, b)] = std::min(a, b);
             }
         }
-    std::vector<unsigned int> body(n_cells);
+    // 0, 1, ... in the order of each body's first coarse cell
+    std::vector<unsigned int>            body(n_cells);
+    std::map<unsigned int, unsigned int> number;
     for (unsigned int i = 0; i < n_cells; ++i)
-      body[i] = root(i);
+      body[i] = number.emplace(root(i), number.size()).first->second;
     return body;
   }
 
@@ -555,8 +557,8 @@ namespace dualcontact
     if (obstacle_contact)
       out << "  obstacle                    : " << obstacle << '\n';
     if (!pairs.empty())
-      out << "  contact between bodies      : slave on master " << pairs
-          << ": dual mortar, Uzawa on the modified Lagrangian\n";
+      out << "  contact between bodies      : slave on master " << pairs << ": "
+          << pair_coupling << ", Uzawa on the modified Lagrangian\n";
     out << "  friction                    : "
         << (!contact      ? "no (no contact)" :
             zero_friction ? "no: the coefficient/threshold is zero, the "
@@ -681,8 +683,11 @@ namespace dualcontact
     for (const auto &[slave, master] : contact_pairs())
       effects_.pairs += (effects_.pairs.empty() ? "" : ", ") +
                         std::to_string(slave) + " on " + std::to_string(master);
-    effects_.obstacle = (*obstacle_)->description();
-    obstacle_moves_   = obstacle_->displacement().norm() > 0;
+    effects_.pair_coupling = parameters.boundary.node_to_segment ?
+                               "node to segment (one pass)" :
+                               "dual mortar";
+    effects_.obstacle      = (*obstacle_)->description();
+    obstacle_moves_        = obstacle_->displacement().norm() > 0;
     if (obstacle_path != nullptr && times.size() > 1 && uses_time(path))
       {
         obstacle_moves_ = true;

@@ -326,6 +326,10 @@ namespace dualcontact
      * moment needs a centre of pressure outside the contact boundary. */
     void
     check_moment(const LoadBalance &balance) const;
+    /** Throws if a body that no support and no obstacle holds, in one
+     * contact pair, is not pressed onto the other body by its loads. */
+    void
+    check_pair_bodies() const;
     /** Throws (a runtime failure) if the solution does not balance the
      * loads to the solver tolerances. */
     void

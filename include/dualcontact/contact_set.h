@@ -159,6 +159,16 @@ namespace dualcontact
     }
 
     /**
+     * The wall time of pairing the surfaces on this mesh [s]: gathering the
+     * master surface, the segments and the coupling (zero without pairs).
+     */
+    double
+    pairing_wall_time() const
+    {
+      return pairing_time;
+    }
+
+    /**
      * The entries the Newton matrix needs beyond the elements': for each
      * paired node, its DoFs and its masters' with each other, each DoF as
      * `constraints` condense it. Rows of other ranks included; the pattern's
@@ -393,8 +403,9 @@ namespace dualcontact
       const Scene<dim>                                            &scene,
       const std::map<types::global_dof_index, types::boundary_id> &slave_id_of);
 
-    bool                                  has_pairs_  = false;
-    types::global_dof_index               n_uncovered = 0;
+    bool                                  has_pairs_   = false;
+    types::global_dof_index               n_uncovered  = 0;
+    double                                pairing_time = 0.;
     mutable TrilinosWrappers::MPI::Vector ghosted, owned_copy;
 
     types::global_dof_index n_global  = 0;

@@ -79,6 +79,21 @@ namespace dualcontact
     couple(const std::vector<Segment> &slave,
            unsigned int                n_slave_nodes,
            const std::vector<Segment> &master);
+
+    /**
+     * The one-pass node-to-segment coupling, for comparison: slave node s
+     * takes the gap to the master point its normal (the mean of its
+     * segments' normals) meets, so that its entries are m_s phi_j(eta_s),
+     * the master's functions at that point (sum_j = m_s where a facing
+     * master segment is met, no entries where none is). It transmits a
+     * uniform pressure as the nodal forces m_s p phi_j(eta_s), which are
+     * not int p phi_j on non-matching meshes: it fails the contact patch
+     * test that the dual mortar passes (doc/two_bodies.md).
+     */
+    Coupling
+    couple_node_to_segment(const std::vector<Segment> &slave,
+                           unsigned int                n_slave_nodes,
+                           const std::vector<Segment> &master);
   } // namespace mortar
 } // namespace dualcontact
 

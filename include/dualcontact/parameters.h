@@ -267,6 +267,9 @@ namespace dualcontact
     // contact between two parts of the mesh (two bodies): slave id ->
     // master id, dual mortar (doc/two_bodies.md)
     std::map<boundary_id, boundary_id> contact_pairs;
+    // <Pair coupling> = node to segment: the one-pass node-to-segment gap
+    // in place of the dual mortar (for comparison)
+    bool node_to_segment = false;
 
     BoundaryCondition
     condition(const boundary_id id) const;

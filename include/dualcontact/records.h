@@ -48,9 +48,11 @@ namespace dualcontact
     unsigned int            n_corner_contact = 0; // beside an obstacle's corner
     // slave nodes of contact pairs that face no master: no contact nodes
     types::global_dof_index n_uncovered = 0;
-    double                  r           = 0.; // augmentation used
-    double                  r_t = 0.; // tangential augmentation (with friction)
-    double                  chi = 0.; // proximal weight used
+    // the wall time of pairing the surfaces on this mesh [s] (contact pairs)
+    double pairing_time = 0.;
+    double r            = 0.; // augmentation used
+    double r_t          = 0.; // tangential augmentation (with friction)
+    double chi          = 0.; // proximal weight used
     // the applied load toward the foundation (tractions and body force;
     // not the lifting of prescribed displacements)
     double normal_load = 0.;
@@ -133,6 +135,10 @@ namespace dualcontact
   {
     std::map<types::boundary_id, std::array<double, 3>> on_id;
     std::array<double, 3>                               applied_load{};
+    // on a mesh of more than one body (contact pairs), the reactions and
+    // the applied loads of each body (the connected parts of the mesh,
+    // numbered as bodies_of_coarse_cells() numbers them, scene.h)
+    std::vector<std::array<double, 3>> on_body, load_on_body;
     // |contact force + reactions + applied loads| / the largest of them:
     // the equilibrium of the whole body (0 when it holds exactly)
     double imbalance = 0.;

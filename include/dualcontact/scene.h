@@ -49,7 +49,8 @@ namespace dualcontact
   /**
    * The bodies of a mesh: the connected components of its coarse mesh
    * (cells that share a vertex), which every rank holds whole, one number
-   * per coarse cell (the smallest coarse cell in its body).
+   * per coarse cell: 0, 1, ... in the order of each body's first coarse
+   * cell.
    */
   template <int dim>
   std::vector<unsigned int>
@@ -74,6 +75,9 @@ namespace dualcontact
     bool obstacle_contact = false;
     // the contact pairs, 'slave id on master id, ...'; empty if none
     std::string pairs;
+    // how their slave nodes see the master surface: 'dual mortar' or 'node
+    // to segment'
+    std::string pair_coupling;
     // the friction law, chosen once from <Friction/Law>; frictionless
     // ('none') also when the scene asked for friction whose coefficient or
     // threshold is zero (zero_friction: the log says so)
@@ -182,6 +186,13 @@ namespace dualcontact
     contact_pairs() const
     {
       return parameters.boundary.contact_pairs;
+    }
+
+    /** <Boundary conditions/Pair coupling> = node to segment. */
+    bool
+    pairs_node_to_segment() const
+    {
+      return parameters.boundary.node_to_segment;
     }
 
     /**

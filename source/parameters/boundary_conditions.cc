@@ -141,6 +141,16 @@ namespace dualcontact
       "bodies (parts of the mesh that share no vertex), and an id belongs to "
       "one pair only. The friction law of subsection Friction holds on every "
       "pair as on the obstacle's 'contact' ids.");
+    declarer.declare_entry(
+      "Pair coupling",
+      "dual mortar",
+      EntryPattern::selection("dual mortar|node to segment"),
+      "How a slave node of a contact pair sees the master surface: 'dual "
+      "mortar' (its gap and slip weighted over the master segments it faces "
+      "with the dual basis, integrated exactly; passes the contact patch "
+      "test on non-matching meshes), or 'node to segment' (the gap to the "
+      "master point its normal meets, one pass; fails that test, for "
+      "comparison: doc/two_bodies.md). Dimensionless.");
     declarer.leave_subsection();
   }
 
@@ -162,6 +172,7 @@ namespace dualcontact
                       "Boundary conditions/Contact pairs"))
       contact_pairs[slave] =
         static_cast<boundary_id>(Utilities::string_to_int(master));
+    node_to_segment = prm.get("Pair coupling") == "node to segment";
     prm.leave_subsection();
   }
 

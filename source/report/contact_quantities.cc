@@ -503,7 +503,8 @@ namespace dualcontact
     /**
      * Contact pairs: slave_body_force_x, _y (_z) and master_body_force_x,
      * _y (_z), the contact forces on the slave and on the master bodies
-     * (doc/two_bodies.md), equal and opposite.
+     * (doc/two_bodies.md), equal and opposite; time_pairing, the wall time
+     * of pairing the surfaces on the mesh [s].
      */
     template <int dim>
     class PairForces : public ReportQuantity<dim>
@@ -522,13 +523,14 @@ namespace dualcontact
       {
         const char *axes[] = {"x", "y", "z"};
         for (unsigned int c = 0; c < dim; ++c)
-          t.add(470,
+          t.add(466,
                 std::string("slave_body_force_") + axes[c],
                 r.zone.on_slave_body[c]);
         for (unsigned int c = 0; c < dim; ++c)
-          t.add(480,
+          t.add(467,
                 std::string("master_body_force_") + axes[c],
                 r.zone.on_master_body[c]);
+        t.add(485, "time_pairing", r.solve.pairing_time);
       }
 
       void

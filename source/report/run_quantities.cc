@@ -271,7 +271,9 @@ namespace dualcontact
 
     /**
      * Every scene: equilibrium_imbalance, applied_load_x, _y (_z), and
-     * reaction_<id>_x, ... for each 'fixed' or 'normal fixed' id.
+     * reaction_<id>_x, ... for each 'fixed' or 'normal fixed' id; on a mesh
+     * of several bodies body_<b>_applied_load_x, ... and
+     * body_<b>_reaction_x, ... for each body b.
      */
     template <int dim>
     class Reactions : public ReportQuantity<dim>
@@ -290,6 +292,18 @@ namespace dualcontact
         for (const auto &[id, f] : r.reactions.on_id)
           for (unsigned int c = 0; c < dim; ++c)
             t.add(450, "reaction_" + std::to_string(id) + "_" + axes[c], f[c]);
+        // a mesh of several bodies: each one's loads and reactions
+        for (unsigned int b = 0; b < r.reactions.on_body.size(); ++b)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const std::string body = "body_" + std::to_string(b);
+              t.add(445,
+                    body + "_applied_load_" + axes[c],
+                    r.reactions.load_on_body[b][c]);
+              t.add(451,
+                    body + "_reaction_" + axes[c],
+                    r.reactions.on_body[b][c]);
+            }
       }
 
       void
@@ -319,6 +333,13 @@ namespace dualcontact
                         " (relative)");
         lines.add(130,
                   wrap("   reactions on the body: ", items, "; ", "     "));
+        std::vector<std::string> bodies;
+        for (unsigned int b = 0; b < r.reactions.on_body.size(); ++b)
+          bodies.push_back("body " + std::to_string(b) + ": reactions " +
+                           vector(r.reactions.on_body[b]) + ", loads " +
+                           vector(r.reactions.load_on_body[b]));
+        if (!bodies.empty())
+          lines.add(131, wrap("   per body: ", bodies, "; ", "     "));
       }
     };
 

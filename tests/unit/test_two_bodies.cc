@@ -91,6 +91,32 @@ TEST_CASE("The contact patch test between two bodies on non-matching meshes "
       }
 }
 
+TEST_CASE("One-pass node-to-segment fails the contact patch test that the "
+          "dual mortar passes",
+          "[pairs]")
+{
+  // prm/two_blocks_patch.prm (7 over 10 cells, p = 1) with <Pair coupling>
+  // = node to segment: each slave node's gap to the master point below it.
+  // The slave forces m_s p reach the master nodes as m_s p phi_j(eta_s),
+  // not int p phi_j: the lower block is loaded unevenly, the pressure is
+  // not uniform, and the displacement is not the exact one.
+  const Run    run("two_blocks_patch.prm",
+                tight + "subsection Boundary conditions\n  set Pair coupling "
+                           "= node to segment\nend\n");
+  Tensor<1, 2> q;
+  const auto [l1, l2]  = deviation(run, 1., q);
+  const CycleResult &r = run.last();
+  INFO("largest |l1 - p| " << l1 << ", displacement error "
+                           << r.errors.error_L2 / r.errors.norm_L2);
+  CHECK(r.solve.n_contact_nodes == 15);
+  // the load still crosses the interface whole, the forces balance
+  CHECK(r.zone.contact_force == Approx(2.).epsilon(1e-10));
+  CHECK(r.zone.on_master_body[1] == Approx(-2.).epsilon(1e-10));
+  // but not as a uniform pressure: measured 0.14 and 1.4 %
+  CHECK(l1 > 0.05);
+  CHECK(r.errors.error_L2 > 1e-3 * r.errors.norm_L2);
+}
+
 TEST_CASE("A contact pair that cannot be one is refused before the solve, "
           "with the pair named",
           "[pairs][errors]")
@@ -125,6 +151,26 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
       CHECK(error.thrown);
       CHECK(error.code == exit_inconsistent);
       CHECK(contains(error.message, words));
+    }
+}
+
+TEST_CASE("A body that only its contact pair could hold, not pressed onto "
+          "the other body by its loads, is refused (exit 7)",
+          "[pairs][errors]")
+{
+  // prm/two_cylinders.prm: nothing holds the upper body but the contact
+  for (const std::string traction : {"0; 4.3", "0; 0", "1; 0"})
+    {
+      const CaughtError error = catch_input_error([&] {
+        const Run run("two_cylinders.prm",
+                      "subsection Boundary conditions\n  set Tractions = 1: " +
+                        traction + "\nend\n");
+      });
+      INFO("traction " << traction << ": " << error.message);
+      CHECK(error.thrown);
+      CHECK(error.code == exit_no_equilibrium);
+      CHECK(contains(error.message,
+                     "nothing holds the body with boundary ids 0, 1"));
     }
 }
 
@@ -360,6 +406,20 @@ TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz between two identical "
       for (const unsigned int d : {0u, 1u})
         CHECK(std::abs(steps[n].zone.on_slave_body[d] +
                        steps[n].zone.on_master_body[d]) <= 1e-10 * P);
+      // each body in equilibrium: its reactions, its loads (none) and the
+      // contact force on it; the lower half disc is body 0, the master
+      const ReactionRecord &reactions = steps[n].reactions;
+      REQUIRE(reactions.on_body.size() == 2);
+      for (const unsigned int d : {0u, 1u})
+        {
+          CHECK(std::abs(reactions.on_body[0][d] +
+                         reactions.load_on_body[0][d] +
+                         steps[n].zone.on_master_body[d]) <= 1e-8 * P);
+          CHECK(std::abs(reactions.on_body[1][d] +
+                         reactions.load_on_body[1][d] +
+                         steps[n].zone.on_slave_body[d]) <= 1e-8 * P);
+          CHECK(reactions.on_body[1][d] == reactions.on_id.at(1)[d]);
+        }
     }
 
   // The energy of the cycle Q* -> -Q* -> Q* (steps 3-11): the dissipation
