@@ -31,8 +31,8 @@ namespace dualcontact
                       const TrilinosWrappers::MPI::Vector &displacement,
                       const MPI_Comm                       comm)
   {
-    // each row as 3 dim + 5 numbers, gathered on rank 0
-    constexpr unsigned int stride = 3 * dim + 5;
+    // each row as 3 dim + 6 numbers, gathered on rank 0
+    constexpr unsigned int stride = 3 * dim + 6;
     std::vector<double>    local;
     local.reserve(stride * contact_set.n_local_nodes());
     const TrilinosWrappers::MPI::Vector &u =
@@ -54,6 +54,9 @@ namespace dualcontact
         for (unsigned int d = 0; d < dim; ++d)
           local.push_back(node.normal[d]);
         local.push_back(contact_set.status(s));
+        local.push_back(node.pair_slave_id == numbers::invalid_boundary_id ?
+                          -1. :
+                          static_cast<double>(node.pair_slave_id));
       }
 
     std::vector<ContactNodeRow<dim>>       rows;
@@ -76,8 +79,9 @@ namespace dualcontact
           row.gap       = *x++;
           for (unsigned int d = 0; d < dim; ++d)
             row.normal[d] = *x++;
-          row.status = static_cast<unsigned int>(*x++);
-          row.along  = row.position * contact_set.tangents[0];
+          row.status        = static_cast<unsigned int>(*x++);
+          row.pair_slave_id = static_cast<int>(*x++);
+          row.along         = row.position * contact_set.tangents[0];
           rows.push_back(row);
         }
     // along the boundary; in 3D along the first mean tangent, then the

@@ -273,8 +273,9 @@ namespace dualcontact
               }
             ++covered;
             ContactNode<dim> &node = nodes[s];
-            Point<dim>        facing;
-            Tensor<1, dim>    master_normal;
+            node.pair_slave_id     = slave_id;
+            Point<dim>     facing;
+            Tensor<1, dim> master_normal;
             node.masters.clear();
             for (const auto &[j, m] : coupling.master[i])
               if (m != 0.)

@@ -95,12 +95,28 @@ namespace dualcontact
       {
         const std::vector<ContactNodeRow<dim>> rows =
           gather_contact_rows(contact_set, solution, mpi_communicator);
+        const std::string suffix =
+          tag + "_" + Utilities::int_to_string(number, digits) + ".csv";
         if (root)
-          write_contact_csv(directory + "/contact" + tag + "_" +
-                              Utilities::int_to_string(number, digits) + ".csv",
+          write_contact_csv(directory + "/contact" + suffix,
                             rows,
                             contact_set.law->has_friction(),
                             scene.exact_pressure());
+        // each contact pair's rows alone, in a file named by its ids
+        for (const auto &[slave, master] : scene.contact_pairs())
+          if (root)
+            {
+              std::vector<ContactNodeRow<dim>> pair_rows;
+              for (const ContactNodeRow<dim> &row : rows)
+                if (row.pair_slave_id == static_cast<int>(slave))
+                  pair_rows.push_back(row);
+              write_contact_csv(directory + "/contact_pair_" +
+                                  std::to_string(slave) + "_" +
+                                  std::to_string(master) + suffix,
+                                pair_rows,
+                                contact_set.law->has_friction(),
+                                scene.exact_pressure());
+            }
       }
 
     if (!parameters.output.write_vtu)

@@ -40,6 +40,8 @@ namespace dualcontact
     double         gap       = 0.; // current gap g0 - u_n
     Tensor<1, dim> normal;         // n_s, outward for the body
     unsigned int   status = 0;     // ContactSet::status()
+    // the slave id of the node's contact pair, -1 against the obstacle
+    int pair_slave_id = -1;
   };
 
   /**

@@ -61,6 +61,8 @@ namespace dualcontact
     // its normal and tangential displacements are relative to the master's
     // sum_j c_sj v_j; empty against the rigid obstacle
     std::vector<MasterTerm<dim>> masters;
+    // the slave id of its pair; invalid_boundary_id against the obstacle
+    types::boundary_id pair_slave_id = numbers::invalid_boundary_id;
   };
 
   /**

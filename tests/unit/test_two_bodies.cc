@@ -91,6 +91,44 @@ TEST_CASE("The contact patch test between two bodies on non-matching meshes "
       }
 }
 
+TEST_CASE("A body on a body on a rigid plane: the patch test through the "
+          "pair and the obstacle at once",
+          "[pairs]")
+{
+  // prm/two_blocks_patch.prm with the lower block's bottom (id 2) on the
+  // frictionless plane y = 0 instead of clamped: the same uniform stress,
+  // p = 1 across both interfaces; sideways only the proximal term holds
+  // the two blocks, at u_x = 0
+  const Run    run("two_blocks_patch.prm",
+                tight + "subsection Boundary conditions\n  set Conditions = "
+                           "0: traction, 1: traction, 2: contact, 3: "
+                           "traction\nend\n");
+  Tensor<1, 2> q;
+  const auto [l1, l2] = deviation(run, 1., q);
+  for (const CycleResult &r : run.problem->results())
+    {
+      INFO("cycle " << r.mesh.cycle << ": error "
+                    << r.errors.error_L2 / r.errors.norm_L2);
+      // the upper block's slave nodes and the lower block's bottom
+      CHECK(r.solve.n_contact_nodes ==
+            7 * (1u << r.mesh.cycle) + 1 + 10 * (1u << r.mesh.cycle) + 1);
+      CHECK(r.solve.n_active == r.solve.n_contact_nodes);
+      CHECK(r.errors.error_L2 <= 1e-8 * r.errors.norm_L2);
+      CHECK(r.zone.on_master_body[1] == Approx(-2.).epsilon(1e-10));
+      // the plane takes the load of both blocks' tops: 2
+      CHECK(std::abs(r.zone.resultant[1] - 2.) <= 1e-10);
+    }
+  INFO("largest |l1 - p| " << l1);
+  CHECK(l1 <= 1e-8);
+  // the pair's rows alone in their own file, as in the file of all nodes
+  const CsvFile all(run.directory + "/contact_01.csv", run.comm);
+  const CsvFile pair(run.directory + "/contact_pair_5_4_01.csv", run.comm);
+  CHECK(all.rows() == 15 + 21);
+  CHECK(pair.rows() == 15);
+  for (unsigned int i = 0; i < pair.rows(); ++i)
+    CHECK(std::abs(pair.value(i, "y") - 1.) <= 1e-12);
+}
+
 TEST_CASE("One-pass node-to-segment fails the contact patch test that the "
           "dual mortar passes",
           "[pairs]")
@@ -381,10 +419,11 @@ TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz between two identical "
                    << " (" << (measured - c) / h << " contact elements)");
       CHECK(std::abs(measured - c) <= h);
 
-      // the tangential traction of contact_step_NNN.csv against the
+      // the tangential traction of contact_pair_0_2_step_NNN.csv (the
+      // pair's rows of contact_step_NNN.csv) against the
       // branch's superposition, RMS over |x| < a with the nodal weights
       std::ostringstream name;
-      name << run.directory << "/contact_step_" << std::setw(3)
+      name << run.directory << "/contact_pair_0_2_step_" << std::setw(3)
            << std::setfill('0') << n + 1 << ".csv";
       const CsvFile table(name.str(), run.comm);
       double        sum = 0., measure = 0.;
