@@ -33,3 +33,9 @@ SCENE=hertz_friction TAG=hertz_friction_merged_nested_iteration TARGET=2 \
   bash benchmarks/benchmark_hertz.sh 2 5
 SCENE=hertz_friction TAG=hertz_friction_nested_nested_iteration TARGET=2 \
   EXTRA_PRM="$nested_strategy" bash benchmarks/benchmark_hertz.sh 2 5
+# two elastic cylinders (a contact pair, dual mortar), frictionless: the
+# defaults against 2.5 linear solves at >= 2e5 DoFs, and cold starts
+SCENE=two_cylinders TAG=two_cylinders TARGET=2.5 \
+  bash benchmarks/benchmark_hertz.sh 2 4
+SCENE=two_cylinders TAG=two_cylinders_cold TARGET=2.5 \
+  EXTRA_PRM="$cold" bash benchmarks/benchmark_hertz.sh 2 4
