@@ -24,26 +24,31 @@ namespace dualcontact
   namespace
   {
     // One face of a pair's surface as the coupling needs it: its nodes'
-    // positions and DoFs (two nodes: degree 1 in 2D), its outward normal,
-    // and the body it belongs to.
+    // positions and DoFs (the support points of FE_Q(k) on the face: the
+    // two vertices first, then the k - 1 inner ones with their coordinate
+    // xi along the face), its outward normal, and the body it belongs to.
     template <int dim>
     struct SurfaceFace
     {
-      std::array<Point<dim>, 2>                               x;
-      std::array<std::array<types::global_dof_index, dim>, 2> dofs;
-      Tensor<1, dim>                                          normal;
-      unsigned int                                            body = 0;
+      std::vector<Point<dim>>                               x;
+      std::vector<std::array<types::global_dof_index, dim>> dofs;
+      std::vector<double>                                   xi;
+      Tensor<1, dim>                                        normal;
+      unsigned int                                          body = 0;
     };
 
     // The faces with boundary id `id` of the cells `take` accepts.
     template <int dim, typename Predicate>
     std::vector<SurfaceFace<dim>>
-    surface_faces(const DoFHandler<dim>           &dof_handler,
+    surface_faces(const Mapping<dim>              &mapping,
+                  const DoFHandler<dim>           &dof_handler,
                   const types::boundary_id         id,
                   const std::vector<unsigned int> &body_of_coarse_cell,
                   const Predicate                 &take)
     {
-      std::vector<SurfaceFace<dim>> faces;
+      const FiniteElement<dim>            &fe = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      std::vector<SurfaceFace<dim>>        faces;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (take(cell))
           for (const unsigned int f : cell->face_indices())
@@ -52,17 +57,58 @@ namespace dualcontact
               {
                 SurfaceFace<dim> face;
                 face.body = body_of<dim>(cell, body_of_coarse_cell);
-                // degree 1: the nodes are the face's vertices, whose DoFs
+                cell->get_dof_indices(dof_indices);
+                // the face's support points by their coordinate xi along
+                // its chord, from the face's vertex 0 (xi = 0) to its
+                // vertex 1 (xi = 1): at degree 1 its vertices, whose DoFs
                 // are one per component in the order of the components
-                for (unsigned int k = 0; k < 2; ++k)
+                // (triangles too); at degree 2-3 (quadrilaterals) FE_Q(k)'s
+                // support points on the face
+                const Point<dim>     v0    = cell->face(f)->vertex(0);
+                const Tensor<1, dim> chord = cell->face(f)->vertex(1) - v0;
+                std::map<double, std::pair<Point<dim>, unsigned int>> by_xi;
+                std::map<unsigned int, std::array<types::global_dof_index, dim>>
+                  dofs_of;
+                if (fe.degree == 1)
+                  for (unsigned int k = 0; k < 2; ++k)
+                    {
+                      by_xi[k] = {cell->face(f)->vertex(k), k};
+                      for (unsigned int c = 0; c < dim; ++c)
+                        dofs_of[k][c] = cell->face(f)->vertex_dof_index(
+                          k, c, cell->active_fe_index());
+                    }
+                else
+                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                    if (fe.has_support_on_face(i, f))
+                      {
+                        const auto [component, base] =
+                          fe.system_to_component_index(i);
+                        dofs_of[base][component] = dof_indices[i];
+                        if (component == 0)
+                          {
+                            const Point<dim> x =
+                              mapping.transform_unit_to_real_cell(
+                                cell, fe.unit_support_point(i));
+                            by_xi[(x - v0) * chord / chord.norm_square()] = {
+                              x, base};
+                          }
+                      }
+                for (const auto &[xi, point] : by_xi)
                   {
-                    face.x[k] = cell->face(f)->vertex(k);
-                    for (unsigned int c = 0; c < dim; ++c)
-                      face.dofs[k][c] = cell->face(f)->vertex_dof_index(
-                        k, c, cell->active_fe_index());
+                    face.x.push_back(point.first);
+                    face.dofs.push_back(dofs_of[point.second]);
+                    face.xi.push_back(xi);
                   }
-                // the outward normal of a straight face: the line turned by
-                // 90 degrees, away from the cell's centre
+                // vertices first (xi = 0 and 1), then the inner nodes
+                std::rotate(face.x.begin() + 1, face.x.end() - 1, face.x.end());
+                std::rotate(face.dofs.begin() + 1,
+                            face.dofs.end() - 1,
+                            face.dofs.end());
+                std::rotate(face.xi.begin() + 1,
+                            face.xi.end() - 1,
+                            face.xi.end());
+                // the outward normal of the face's chord: the line turned
+                // by 90 degrees, away from the cell's centre
                 const Tensor<1, dim> along = face.x[1] - face.x[0];
                 face.normal[0]             = along[1];
                 face.normal[1]             = -along[0];
@@ -87,7 +133,7 @@ namespace dualcontact
       for (const SurfaceFace<dim> &face : faces)
         {
           mortar::Segment segment;
-          for (const unsigned int k : {0u, 1u})
+          for (unsigned int k = 0; k < face.x.size(); ++k)
             {
               const auto [it, inserted] =
                 number.emplace(face.dofs[k][0], number.size());
@@ -96,9 +142,17 @@ namespace dualcontact
                   dofs.push_back(face.dofs[k]);
                   points.push_back(face.x[k]);
                 }
-              segment.node[k] = it->second;
-              for (unsigned int d = 0; d < 2; ++d)
-                segment.x[k][d] = face.x[k][d];
+              if (k < 2)
+                {
+                  segment.node[k] = it->second;
+                  for (unsigned int d = 0; d < 2; ++d)
+                    segment.x[k][d] = face.x[k][d];
+                }
+              else
+                {
+                  segment.inner_node.push_back(it->second);
+                  segment.inner_xi.push_back(face.xi[k]);
+                }
             }
           for (unsigned int d = 0; d < 2; ++d)
             segment.normal[d] = face.normal[d];
@@ -107,49 +161,60 @@ namespace dualcontact
       return result;
     }
 
-    // every rank's faces on every rank
+    // every rank's faces on every rank (each face has `n` nodes)
     template <int dim>
     std::vector<SurfaceFace<dim>>
-    gather(const std::vector<SurfaceFace<dim>> &local, const MPI_Comm comm)
+    gather(const std::vector<SurfaceFace<dim>> &local,
+           const unsigned int                   n,
+           const MPI_Comm                       comm)
     {
       std::vector<double>                  reals;
       std::vector<types::global_dof_index> integers;
       for (const SurfaceFace<dim> &face : local)
         {
-          for (unsigned int k = 0; k < 2; ++k)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                reals.push_back(face.x[k][d]);
-                integers.push_back(face.dofs[k][d]);
-              }
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  reals.push_back(face.x[k][d]);
+                  integers.push_back(face.dofs[k][d]);
+                }
+              reals.push_back(face.xi[k]);
+            }
           for (unsigned int d = 0; d < dim; ++d)
             reals.push_back(face.normal[d]);
           integers.push_back(face.body);
         }
-      const auto all_reals    = Utilities::MPI::all_gather(comm, reals);
+      const unsigned int n_reals    = n * (dim + 1) + dim;
+      const unsigned int n_integers = n * dim + 1;
+      const auto         all_reals  = Utilities::MPI::all_gather(comm, reals);
       const auto all_integers = Utilities::MPI::all_gather(comm, integers);
       std::vector<SurfaceFace<dim>> faces;
       for (unsigned int rank = 0; rank < all_reals.size(); ++rank)
-        {
-          const unsigned int n = all_integers[rank].size() / (2 * dim + 1);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const double                  *r = &all_reals[rank][i * 3 * dim];
-              const types::global_dof_index *z =
-                &all_integers[rank][i * (2 * dim + 1)];
-              SurfaceFace<dim> face;
-              for (unsigned int k = 0; k < 2; ++k)
+        for (unsigned int i = 0; i < all_integers[rank].size() / n_integers;
+             ++i)
+          {
+            const double                  *r = &all_reals[rank][i * n_reals];
+            const types::global_dof_index *z =
+              &all_integers[rank][i * n_integers];
+            SurfaceFace<dim> face;
+            face.x.resize(n);
+            face.dofs.resize(n);
+            face.xi.resize(n);
+            for (unsigned int k = 0; k < n; ++k)
+              {
                 for (unsigned int d = 0; d < dim; ++d)
                   {
-                    face.x[k][d]    = r[k * dim + d];
+                    face.x[k][d]    = r[k * (dim + 1) + d];
                     face.dofs[k][d] = z[k * dim + d];
                   }
-              for (unsigned int d = 0; d < dim; ++d)
-                face.normal[d] = r[2 * dim + d];
-              face.body = z[2 * dim];
-              faces.push_back(face);
-            }
-        }
+                face.xi[k] = r[k * (dim + 1) + dim];
+              }
+            for (unsigned int d = 0; d < dim; ++d)
+              face.normal[d] = r[n * (dim + 1) + d];
+            face.body = z[n * dim];
+            faces.push_back(face);
+          }
       return faces;
     }
   } // namespace
@@ -157,7 +222,7 @@ namespace dualcontact
   template <int dim>
   void
   ContactSet<dim>::couple_pairs(
-    const Mapping<dim> &, // degree 1: the nodes are the faces' vertices
+    const Mapping<dim>                                          &mapping,
     const DoFHandler<dim>                                       &dof_handler,
     const Scene<dim>                                            &scene,
     const std::map<types::global_dof_index, types::boundary_id> &slave_id_of)
@@ -168,8 +233,13 @@ namespace dualcontact
     if (!has_pairs_)
       return;
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    AssertThrow(dim == 2 && dof_handler.get_fe().degree == 1,
-                ExcMessage("Contact pairs are built for degree 1 in 2D."));
+    AssertThrow(dim == 2 && (dof_handler.get_fe().degree == 1 ||
+                             dof_handler.get_fe().reference_cell() ==
+                               ReferenceCells::get_hypercube<dim>()),
+                ExcMessage("Contact pairs are built in 2D, at degree 2-3 "
+                           "on quadrilaterals."));
+    // the nodes of a face: the support points of FE_Q(k) on it
+    const unsigned int n_face_nodes = dof_handler.get_fe().degree + 1;
     const std::vector<unsigned int> body_of_coarse_cell =
       bodies_of_coarse_cells(dof_handler.get_triangulation());
     const bool node_to_segment = scene.pairs_node_to_segment();
@@ -185,14 +255,17 @@ namespace dualcontact
         // the master surface, whole on every rank; the slave faces of the
         // owned and ghost cells, which hold every face at an owned node
         const auto master_faces =
-          gather(surface_faces(dof_handler,
+          gather(surface_faces(mapping,
+                               dof_handler,
                                master_id,
                                body_of_coarse_cell,
                                [](const auto &cell) {
                                  return cell->is_locally_owned();
                                }),
+                 n_face_nodes,
                  comm);
-        const auto slave_faces = surface_faces(dof_handler,
+        const auto slave_faces = surface_faces(mapping,
+                                               dof_handler,
                                                slave_id,
                                                body_of_coarse_cell,
                                                [](const auto &cell) {
@@ -234,9 +307,16 @@ namespace dualcontact
         // each master node's outward normal: the mean of its faces'
         std::vector<Tensor<1, dim>> master_normals(master_points.size());
         for (const mortar::Segment &segment : master_segments)
-          for (const unsigned int k : {0u, 1u})
-            for (unsigned int d = 0; d < 2; ++d)
-              master_normals[segment.node[k]][d] += segment.normal[d];
+          {
+            std::vector<unsigned int> on_segment = {segment.node[0],
+                                                    segment.node[1]};
+            on_segment.insert(on_segment.end(),
+                              segment.inner_node.begin(),
+                              segment.inner_node.end());
+            for (const unsigned int j : on_segment)
+              for (unsigned int d = 0; d < 2; ++d)
+                master_normals[j][d] += segment.normal[d];
+          }
         std::map<types::global_dof_index, unsigned int>       slave_number;
         std::vector<std::array<types::global_dof_index, dim>> slave_dofs;
         std::vector<Point<dim>>                               slave_points;

@@ -1,3 +1,7 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/lac/full_matrix.h>
+
 #include <dualcontact/mortar.h>
 
 #include <algorithm>
@@ -18,6 +22,39 @@ namespace dualcontact
       return weight[s] > 0. ? sum / weight[s] : 0.;
     }
 
+    namespace
+    {
+      // The nodes of a segment in the order of its basis: the end points
+      // at xi = 0 and 1, then the inner nodes.
+      std::vector<double>
+      node_coordinates(const Segment &s)
+      {
+        std::vector<double> xi = {0., 1.};
+        xi.insert(xi.end(), s.inner_xi.begin(), s.inner_xi.end());
+        return xi;
+      }
+
+      std::vector<unsigned int>
+      node_numbers(const Segment &s)
+      {
+        std::vector<unsigned int> n = {s.node[0], s.node[1]};
+        n.insert(n.end(), s.inner_node.begin(), s.inner_node.end());
+        return n;
+      }
+
+      // the Lagrange polynomials through the nodes `xi`, at `x`
+      std::vector<double>
+      lagrange(const std::vector<double> &xi, const double x)
+      {
+        std::vector<double> phi(xi.size(), 1.);
+        for (std::size_t a = 0; a < xi.size(); ++a)
+          for (std::size_t b = 0; b < xi.size(); ++b)
+            if (b != a)
+              phi[a] *= (x - xi[b]) / (xi[a] - xi[b]);
+        return phi;
+      }
+    } // namespace
+
     Coupling
     couple(const std::vector<Segment> &slave,
            const unsigned int          n_slave_nodes,
@@ -26,9 +63,6 @@ namespace dualcontact
       Coupling coupling;
       coupling.weight.assign(n_slave_nodes, 0.);
       std::vector<std::map<unsigned int, double>> entries(n_slave_nodes);
-      // the two Gauss points of [0, 1] and their weights
-      const double gauss[2] = {0.5 - 0.5 / std::sqrt(3.),
-                               0.5 + 0.5 / std::sqrt(3.)};
 
       for (const Segment &s : slave)
         {
@@ -36,10 +70,33 @@ namespace dualcontact
           const double       length = along.norm();
           if (length == 0.)
             continue;
-          // phi_0 = 1 - xi, phi_1 = xi on the segment, xi in [0, 1], and
-          // int phi_k = length / 2
-          for (const unsigned int k : {0u, 1u})
-            coupling.weight[s.node[k]] += 0.5 * length;
+          const std::vector<double>       xi_s = node_coordinates(s);
+          const std::vector<unsigned int> n_s  = node_numbers(s);
+          const unsigned int              n    = xi_s.size();
+          const unsigned int              k    = n - 1; // the degree
+          // Gauss points on [0, 1] exact for degree 2k
+          const QGauss<1> gauss(k + 1);
+          // D = diag(int phi_t) and the mass matrix M on [0, 1]; the dual
+          // coefficients A = D M^-1 (scale-free: both grow with the length)
+          FullMatrix<double>  mass(n, n), inverse(n, n), dual(n, n);
+          std::vector<double> integral(n, 0.);
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              const auto phi = lagrange(xi_s, gauss.point(q)[0]);
+              for (unsigned int a = 0; a < n; ++a)
+                {
+                  integral[a] += gauss.weight(q) * phi[a];
+                  for (unsigned int b = 0; b < n; ++b)
+                    mass(a, b) += gauss.weight(q) * phi[a] * phi[b];
+                }
+            }
+          inverse.invert(mass);
+          for (unsigned int a = 0; a < n; ++a)
+            {
+              coupling.weight[n_s[a]] += integral[a] * length;
+              for (unsigned int b = 0; b < n; ++b)
+                dual(a, b) = integral[a] * inverse(a, b);
+            }
           // the slave coordinate of a point projected along the normal
           const auto coordinate = [&](const Point<2> &p) {
             return (p - s.x[0]) * along / (length * length);
@@ -59,20 +116,26 @@ namespace dualcontact
               const double hi = std::min(1., std::max(xi0, xi1));
               if (hi <= lo)
                 continue;
-              for (const double g : gauss)
+              const std::vector<double>       xi_m = node_coordinates(m);
+              const std::vector<unsigned int> n_m  = node_numbers(m);
+              // psi_a phi_b has degree k + k_master: Gauss points enough
+              const QGauss<1> overlap((k + xi_m.size()) / 2 + 1);
+              for (unsigned int q = 0; q < overlap.size(); ++q)
                 {
-                  const double xi = lo + (hi - lo) * g;
-                  const double w  = 0.5 * (hi - lo) * length;
-                  // the dual functions of the slave segment:
-                  // psi_0 = 2 phi_0 - phi_1, psi_1 = 2 phi_1 - phi_0
-                  const double psi[2] = {2. - 3. * xi, 3. * xi - 1.};
-                  // the master's functions at the same point: linear in
-                  // its own coordinate eta, which is affine in xi
-                  const double eta    = (xi - xi0) / (xi1 - xi0);
-                  const double phi[2] = {1. - eta, eta};
-                  for (const unsigned int a : {0u, 1u})
-                    for (const unsigned int b : {0u, 1u})
-                      entries[s.node[a]][m.node[b]] += w * psi[a] * phi[b];
+                  const double xi    = lo + (hi - lo) * overlap.point(q)[0];
+                  const double w     = (hi - lo) * length * overlap.weight(q);
+                  const auto   phi_s = lagrange(xi_s, xi);
+                  // the master's functions at the same point: in its own
+                  // coordinate eta, which is affine in xi
+                  const auto phi_m = lagrange(xi_m, (xi - xi0) / (xi1 - xi0));
+                  for (unsigned int a = 0; a < n; ++a)
+                    {
+                      double psi = 0.;
+                      for (unsigned int b = 0; b < n; ++b)
+                        psi += dual(a, b) * phi_s[b];
+                      for (unsigned int b = 0; b < phi_m.size(); ++b)
+                        entries[n_s[a]][n_m[b]] += w * psi * phi_m[b];
+                    }
                 }
             }
         }

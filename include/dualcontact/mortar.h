@@ -1,7 +1,9 @@
 // The dual mortar coupling of two surfaces in 2D: the slave surface carries
 // the contact nodes and their multipliers, the master surface is the
-// other body. With piecewise-linear traces on both, and on each slave
-// segment the dual basis psi_s biorthogonal to the slave's own basis,
+// other body. With piecewise-polynomial traces of degree k on both, and on
+// each slave segment the dual basis psi_s = sum_t a_st phi_t, A = D M^-1
+// (D the diagonal of int phi_t over the segment, M its mass matrix),
+// biorthogonal to the slave's own basis,
 //   int psi_s phi_t = delta_st m_s,   m_s = int phi_s,
 // the weighted gap and the slip of slave node s read
 //   n_s . (u_s - sum_j c_sj u_j) + g0_s,   c_sj = M_sj / m_s,
@@ -42,6 +44,12 @@ namespace dualcontact
       // curved master's far side, which projects onto the slave's line as
       // well, stays out
       Tensor<1, 2> normal;
+      // at degree k > 1 the k - 1 nodes between the end points: their
+      // numbers and their coordinates xi in (0, 1) along x[0] -> x[1]; the
+      // trace is the polynomial of degree k through all k + 1 nodes (a
+      // curved face is taken along its chord)
+      std::vector<unsigned int> inner_node;
+      std::vector<double>       inner_xi;
     };
 
     /**
@@ -67,8 +75,10 @@ namespace dualcontact
      * m_s and M_sj for the slave segments against the master segments.
      * Each master segment is projected onto the line of each slave segment
      * along the slave segment's normal; where the projections overlap,
-     * psi_s phi_j is a quadratic polynomial of the slave coordinate,
-     * integrated exactly by two Gauss points. A master segment that
+     * psi_s phi_j is a polynomial of degree 2k of the slave coordinate,
+     * integrated exactly by k + 1 Gauss points. The dual basis exists
+     * where every int phi_t > 0 (the Gauss-Lobatto nodes of FE_Q(k),
+     * k = 1-3). A master segment that
      * projects onto a point (it stands at a right angle to the slave), or
      * that does not face the slave segment (normals given and
      * n_slave . n_master >= -1/2), adds nothing. The search is over all pairs

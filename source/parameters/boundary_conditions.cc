@@ -198,15 +198,27 @@ namespace dualcontact
                            std::to_string(n_ids - 1) + ").",
                          exit_inconsistent);
 
-    // the mortar segments are intervals: 2D, and straight faces with a
-    // linear trace (doc/two_bodies.md)
-    if (!contact_pairs.empty() &&
-        (dim != 2 || parameters.discretization.degree != 1))
+    // the mortar segments are intervals (2D); at degree 2-3 the nodes of a
+    // face are FE_Q(k)'s support points on it (quadrilaterals), and the
+    // node-to-segment comparison takes the vertices alone (degree 1)
+    const unsigned int degree = parameters.discretization.degree;
+    if (!contact_pairs.empty() && dim != 2)
       throw InputError("The entry <Boundary conditions/Contact pairs> couples "
-                       "two bodies in 2D with elements of degree 1: set "
-                       "<Geometry/Dimension> to 2 and <Discretization/"
-                       "Polynomial degree> to 1, or put a rigid obstacle "
-                       "in its place.",
+                       "two bodies in 2D: set <Geometry/Dimension> to 2, or "
+                       "put a rigid obstacle in the body's place.",
+                       exit_inconsistent);
+    if (!contact_pairs.empty() && degree > 1 &&
+        geometry.cell_kind == CellKind::simplex)
+      throw InputError("The entry <Boundary conditions/Contact pairs> couples "
+                       "two bodies of triangles at degree 1 only: set "
+                       "<Discretization/Polynomial degree> to 1, or <Geometry/"
+                       "Cell type> to quadrilateral.",
+                       exit_inconsistent);
+    if (!contact_pairs.empty() && degree > 1 && node_to_segment)
+      throw InputError("The entry <Boundary conditions/Pair coupling> = node "
+                       "to segment couples the vertices of degree 1 only: set "
+                       "<Discretization/Polynomial degree> to 1, or the "
+                       "coupling to dual mortar.",
                        exit_inconsistent);
     // a pair: two different ids of the geometry, both free (the pair is
     // their condition), each in one pair only

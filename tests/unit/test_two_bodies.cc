@@ -91,6 +91,45 @@ TEST_CASE("The contact patch test between two bodies on non-matching meshes "
       }
 }
 
+TEST_CASE("The contact patch test between two bodies at degrees 2 and 3: "
+          "the dual basis of each segment, A = D M^-1, passes it as at "
+          "degree 1",
+          "[pairs]")
+{
+  for (const unsigned int degree : {2u, 3u})
+    for (const bool friction : {false, true})
+      {
+        INFO("degree " << degree << ", "
+                       << (friction ? "all stick under the shear 0.2" :
+                                      "frictionless"));
+        const Run    run("two_blocks_patch.prm",
+                      (friction ? patch_stick : tight) +
+                        "subsection Discretization\n  set Polynomial degree "
+                           "= " +
+                        std::to_string(degree) + "\nend\n");
+        Tensor<1, 2> q;
+        q[0]                = friction ? 0.2 : 0.;
+        const auto [l1, l2] = deviation(run, 1., q);
+        for (const CycleResult &r : run.problem->results())
+          {
+            INFO("cycle " << r.mesh.cycle << ": error "
+                          << r.errors.error_L2 / r.errors.norm_L2);
+            // the support points of the upper block's 7 (14) faces
+            CHECK(r.solve.n_contact_nodes ==
+                  degree * 7 * (1u << r.mesh.cycle) + 1);
+            CHECK(r.solve.n_uncovered == 0);
+            CHECK(r.errors.error_L2 <= 1e-8 * r.errors.norm_L2);
+            CHECK(r.zone.contact_force == Approx(2.).epsilon(1e-10));
+            for (unsigned int c = 0; c < 2; ++c)
+              CHECK(std::abs(r.zone.on_slave_body[c] +
+                             r.zone.on_master_body[c]) <= 1e-10 * 2.);
+          }
+        INFO("largest |l1 - p| " << l1 << ", |l2 - q| " << l2);
+        CHECK(l1 <= 1e-8);
+        CHECK(l2 <= 1e-8);
+      }
+}
+
 TEST_CASE("A body on a body on a rigid plane: the patch test through the "
           "pair and the obstacle at once",
           "[pairs]")
@@ -239,8 +278,9 @@ TEST_CASE("Hertz, two cylinders (prm/two_cylinders.prm): identical, then E2 "
     {
       INFO((same ? "identical cylinders" : "E2 = 3 E1, R2 = 2 R1"));
       const Run          run("two_cylinders.prm", same ? "" : dissimilar);
-      const CycleResult &r       = run.last();
-      const double       element = largest_spacing(run, 0.15);
+      const CycleResult &r = run.last();
+      // the contact element at the zone's edge, a = 0.1
+      const double element = largest_spacing(run, 0.11);
       INFO("DoFs " << r.mesh.n_dofs << ", peak error "
                    << r.zone.peak_pressure_error << ", half-width "
                    << r.zone.edge_half_width << " (element " << element
@@ -261,6 +301,28 @@ TEST_CASE("Hertz, two cylinders (prm/two_cylinders.prm): identical, then E2 "
       CHECK(results.back().zone.pressure_error <
             0.6 * results[results.size() - 2].zone.pressure_error);
     }
+}
+
+TEST_CASE("Hertz, two cylinders at degree 2 (curved faces along their "
+          "chords): the peak within 1 % and the half-width within one node "
+          "spacing",
+          "[pairs]")
+{
+  const Run          run("two_cylinders.prm",
+                "subsection Discretization\n  set Polynomial degree = 2\nend\n"
+                         "subsection Refinement\n  set Number of cycles = 1\nend\n");
+  const CycleResult &r       = run.last();
+  const double       spacing = largest_spacing(run, 0.11);
+  INFO("DoFs " << r.mesh.n_dofs << ", peak error " << r.zone.peak_pressure_error
+               << ", half-width " << r.zone.edge_half_width << " (node spacing "
+               << spacing << "), pressure error " << r.zone.pressure_error);
+  CHECK(r.mesh.n_dofs <= 100000);
+  CHECK(std::abs(r.zone.peak_pressure_error) <= 0.01);
+  CHECK(spacing > 0.);
+  CHECK(std::abs(r.zone.edge_half_width - 0.1) <= spacing);
+  CHECK(r.zone.pressure_error <= 0.02);
+  CHECK(std::abs(r.zone.on_slave_body[1] + r.zone.on_master_body[1]) <=
+        1e-10 * std::abs(r.zone.on_slave_body[1]));
 }
 
 namespace
