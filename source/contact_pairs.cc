@@ -1,8 +1,10 @@
 // The contact nodes of a pair of bodies (doc/two_bodies.md): the master
 // surface gathered on every rank, the dual mortar coupling of each slave
-// node with the master nodes it faces (mortar.h), the gaps, the checks of a
+// node with the master nodes it faces (mortar.h in 2D, mortar_3d.h in 3D),
+// the hanging nodes on either surface condensed, the gaps, the checks of a
 // pair, and the parallel pieces the coupling needs (the master entries of a
 // vector, the Newton matrix's extra entries).
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
@@ -11,6 +13,7 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/mortar.h>
+#include <dualcontact/mortar_3d.h>
 #include <dualcontact/parameter_helpers.h>
 
 #include <algorithm>
@@ -23,18 +26,27 @@ namespace dualcontact
 {
   namespace
   {
+    // The most nodes a hanging node hangs on: the two ends of a coarse
+    // face's edge on a surface in 3D at degree 1, or the four corners of
+    // a coarse face
+    constexpr unsigned int max_parents = 4;
+
     // One face of a pair's surface as the coupling needs it: its nodes'
-    // positions and DoFs (the support points of FE_Q(k) on the face: the
-    // two vertices first, then the k - 1 inner ones with their coordinate
-    // xi along the face), its outward normal, and the body it belongs to.
+    // positions and DoFs (in 2D the support points of FE_Q(k) on the face:
+    // the two vertices first, then the k - 1 inner ones with their
+    // coordinate xi along the face; in 3D its vertices), for a hanging node the first DoFs of the nodes it
+    // hangs on and their weights, its outward normal, and the body it
+    // belongs to.
     template <int dim>
     struct SurfaceFace
     {
       std::vector<Point<dim>>                               x;
       std::vector<std::array<types::global_dof_index, dim>> dofs;
       std::vector<double>                                   xi;
-      Tensor<1, dim>                                        normal;
-      unsigned int                                          body = 0;
+      std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+                     parents;
+      Tensor<1, dim> normal;
+      unsigned int   body = 0;
     };
 
     // The faces with boundary id `id` of the cells `take` accepts.
@@ -42,6 +54,7 @@ namespace dualcontact
     std::vector<SurfaceFace<dim>>
     surface_faces(const Mapping<dim>              &mapping,
                   const DoFHandler<dim>           &dof_handler,
+                  const AffineConstraints<double> &hanging,
                   const types::boundary_id         id,
                   const std::vector<unsigned int> &body_of_coarse_cell,
                   const Predicate                 &take)
@@ -58,107 +71,242 @@ namespace dualcontact
                 SurfaceFace<dim> face;
                 face.body = body_of<dim>(cell, body_of_coarse_cell);
                 cell->get_dof_indices(dof_indices);
-                // the face's support points by their coordinate xi along
-                // its chord, from the face's vertex 0 (xi = 0) to its
-                // vertex 1 (xi = 1): at degree 1 its vertices, whose DoFs
-                // are one per component in the order of the components
-                // (triangles too); at degree 2-3 (quadrilaterals) FE_Q(k)'s
-                // support points on the face
-                const Point<dim>     v0    = cell->face(f)->vertex(0);
-                const Tensor<1, dim> chord = cell->face(f)->vertex(1) - v0;
-                std::map<double, std::pair<Point<dim>, unsigned int>> by_xi;
-                std::map<unsigned int, std::array<types::global_dof_index, dim>>
-                  dofs_of;
-                if (fe.degree == 1)
-                  for (unsigned int k = 0; k < 2; ++k)
-                    {
-                      by_xi[k] = {cell->face(f)->vertex(k), k};
-                      for (unsigned int c = 0; c < dim; ++c)
-                        dofs_of[k][c] = cell->face(f)->vertex_dof_index(
-                          k, c, cell->active_fe_index());
-                    }
-                else
-                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                    if (fe.has_support_on_face(i, f))
-                      {
-                        const auto [component, base] =
-                          fe.system_to_component_index(i);
-                        dofs_of[base][component] = dof_indices[i];
-                        if (component == 0)
-                          {
-                            const Point<dim> x =
-                              mapping.transform_unit_to_real_cell(
-                                cell, fe.unit_support_point(i));
-                            by_xi[(x - v0) * chord / chord.norm_square()] = {
-                              x, base};
-                          }
-                      }
-                for (const auto &[xi, point] : by_xi)
+                if constexpr (dim == 3)
                   {
-                    face.x.push_back(point.first);
-                    face.dofs.push_back(dofs_of[point.second]);
-                    face.xi.push_back(xi);
+                    // degree 1: the face's vertices in deal.II's order
+                    // (lexicographic on a quadrilateral), the DoFs of a
+                    // vertex one per component in the order of the
+                    // components; its outward normal from the first three
+                    const auto face_it = cell->face(f);
+                    for (const unsigned int v : face_it->vertex_indices())
+                      {
+                        face.x.push_back(face_it->vertex(v));
+                        face.dofs.emplace_back();
+                        for (unsigned int c = 0; c < dim; ++c)
+                          face.dofs.back()[c] =
+                            face_it->vertex_dof_index(v,
+                                                      c,
+                                                      cell->active_fe_index());
+                        face.xi.push_back(0.);
+                      }
+                    face.normal = cross_product_3d(face.x[1] - face.x[0],
+                                                   face.x[2] - face.x[0]);
                   }
-                // vertices first (xi = 0 and 1), then the inner nodes
-                std::rotate(face.x.begin() + 1, face.x.end() - 1, face.x.end());
-                std::rotate(face.dofs.begin() + 1,
-                            face.dofs.end() - 1,
-                            face.dofs.end());
-                std::rotate(face.xi.begin() + 1,
-                            face.xi.end() - 1,
-                            face.xi.end());
-                // the outward normal of the face's chord: the line turned
-                // by 90 degrees, away from the cell's centre
-                const Tensor<1, dim> along = face.x[1] - face.x[0];
-                face.normal[0]             = along[1];
-                face.normal[1]             = -along[0];
+                else
+                  {
+                    // the face's support points by their coordinate xi along
+                    // its chord, from the face's vertex 0 (xi = 0) to its
+                    // vertex 1 (xi = 1): at degree 1 its vertices, whose DoFs
+                    // are one per component in the order of the components
+                    // (triangles too); at degree 2-3 (quadrilaterals) FE_Q(k)'s
+                    // support points on the face
+                    const Point<dim>     v0    = cell->face(f)->vertex(0);
+                    const Tensor<1, dim> chord = cell->face(f)->vertex(1) - v0;
+                    std::map<double, std::pair<Point<dim>, unsigned int>> by_xi;
+                    std::map<unsigned int,
+                             std::array<types::global_dof_index, dim>>
+                      dofs_of;
+                    if (fe.degree == 1)
+                      for (unsigned int k = 0; k < 2; ++k)
+                        {
+                          by_xi[k] = {cell->face(f)->vertex(k), k};
+                          for (unsigned int c = 0; c < dim; ++c)
+                            dofs_of[k][c] = cell->face(f)->vertex_dof_index(
+                              k, c, cell->active_fe_index());
+                        }
+                    else
+                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                        if (fe.has_support_on_face(i, f))
+                          {
+                            const auto [component, base] =
+                              fe.system_to_component_index(i);
+                            dofs_of[base][component] = dof_indices[i];
+                            if (component == 0)
+                              {
+                                const Point<dim> x =
+                                  mapping.transform_unit_to_real_cell(
+                                    cell, fe.unit_support_point(i));
+                                by_xi[(x - v0) * chord / chord.norm_square()] =
+                                  {x, base};
+                              }
+                          }
+                    for (const auto &[xi, point] : by_xi)
+                      {
+                        face.x.push_back(point.first);
+                        face.dofs.push_back(dofs_of[point.second]);
+                        face.xi.push_back(xi);
+                      }
+                    // vertices first (xi = 0 and 1), then the inner nodes
+                    std::rotate(face.x.begin() + 1,
+                                face.x.end() - 1,
+                                face.x.end());
+                    std::rotate(face.dofs.begin() + 1,
+                                face.dofs.end() - 1,
+                                face.dofs.end());
+                    std::rotate(face.xi.begin() + 1,
+                                face.xi.end() - 1,
+                                face.xi.end());
+                    // the normal of the face's chord: the line turned by 90
+                    // degrees
+                    const Tensor<1, dim> along = face.x[1] - face.x[0];
+                    face.normal[0]             = along[1];
+                    face.normal[1]             = -along[0];
+                  }
+                // outward: away from the cell's centre
                 face.normal /= face.normal.norm();
                 if (face.normal * (face.x[0] - cell->center()) < 0.)
                   face.normal *= -1.;
+                for (const auto &dofs : face.dofs)
+                  {
+                    face.parents.emplace_back();
+                    if (hanging.is_constrained(dofs[0]))
+                      face.parents.back() =
+                        *hanging.get_constraint_entries(dofs[0]);
+                    AssertThrow(face.parents.back().size() <= max_parents,
+                                ExcMessage("A hanging node of a contact pair's "
+                                           "surface hangs on more than four "
+                                           "nodes."));
+                  }
                 faces.push_back(face);
               }
       return faces;
     }
 
-    // Faces as the mortar coupling takes them, numbering their nodes by
-    // their first DoF in `number`
+    // The number of node k of `face` in `number` (by its first DoF), a new
+    // node's DoFs and position appended to `dofs` and `points`
     template <int dim>
+    unsigned int
+    node_number(const SurfaceFace<dim>                                &face,
+                const unsigned int                                     k,
+                std::map<types::global_dof_index, unsigned int>       &number,
+                std::vector<std::array<types::global_dof_index, dim>> &dofs,
+                std::vector<Point<dim>>                               &points)
+    {
+      const auto [it, inserted] =
+        number.emplace(face.dofs[k][0], number.size());
+      if (inserted)
+        {
+          dofs.push_back(face.dofs[k]);
+          points.push_back(face.x[k]);
+        }
+      return it->second;
+    }
+
+    // 2D faces as the mortar coupling takes them (mortar.h), their nodes
+    // numbered in `number`
     std::vector<mortar::Segment>
-    segments(const std::vector<SurfaceFace<dim>>                   &faces,
-             std::map<types::global_dof_index, unsigned int>       &number,
-             std::vector<std::array<types::global_dof_index, dim>> &dofs,
-             std::vector<Point<dim>>                               &points)
+    segments(const std::vector<SurfaceFace<2>>                   &faces,
+             std::map<types::global_dof_index, unsigned int>     &number,
+             std::vector<std::array<types::global_dof_index, 2>> &dofs,
+             std::vector<Point<2>>                               &points)
     {
       std::vector<mortar::Segment> result;
-      for (const SurfaceFace<dim> &face : faces)
+      for (const SurfaceFace<2> &face : faces)
         {
           mortar::Segment segment;
           for (unsigned int k = 0; k < face.x.size(); ++k)
             {
-              const auto [it, inserted] =
-                number.emplace(face.dofs[k][0], number.size());
-              if (inserted)
-                {
-                  dofs.push_back(face.dofs[k]);
-                  points.push_back(face.x[k]);
-                }
+              const unsigned int j =
+                node_number<2>(face, k, number, dofs, points);
               if (k < 2)
                 {
-                  segment.node[k] = it->second;
-                  for (unsigned int d = 0; d < 2; ++d)
-                    segment.x[k][d] = face.x[k][d];
+                  segment.node[k] = j;
+                  segment.x[k]    = face.x[k];
                 }
               else
                 {
-                  segment.inner_node.push_back(it->second);
+                  segment.inner_node.push_back(j);
                   segment.inner_xi.push_back(face.xi[k]);
                 }
             }
-          for (unsigned int d = 0; d < 2; ++d)
-            segment.normal[d] = face.normal[d];
+          segment.normal = face.normal;
           result.push_back(segment);
         }
       return result;
+    }
+
+    // 3D faces as the mortar coupling takes them (mortar_3d.h), their
+    // nodes numbered in `number`
+    std::vector<mortar::Face>
+    segments(const std::vector<SurfaceFace<3>>                   &faces,
+             std::map<types::global_dof_index, unsigned int>     &number,
+             std::vector<std::array<types::global_dof_index, 3>> &dofs,
+             std::vector<Point<3>>                               &points)
+    {
+      std::vector<mortar::Face> result;
+      for (const SurfaceFace<3> &face : faces)
+        {
+          mortar::Face m;
+          m.x = face.x;
+          for (unsigned int k = 0; k < face.x.size(); ++k)
+            m.node.push_back(node_number<3>(face, k, number, dofs, points));
+          m.normal = face.normal;
+          result.push_back(m);
+        }
+      return result;
+    }
+
+    // A hanging slave node is no contact node: its row of the coupling (its
+    // weight m_h and its M_hj) goes to the nodes p it hangs on, times the
+    // weights w_hp of its constraint u_h = sum_p w_hp u_p, as its m_h goes
+    // to their m_p. The multiplier of p is then psi_p + sum_h w_hp psi_h,
+    // the dual of the condensed trace. The rank that owns h has all the
+    // faces at h (its owned and ghost cells); the owner of p may not, so the
+    // owner of h sends its row to the owner of p. The master nodes are
+    // numbered alike on every rank (the gathered master surface).
+    void
+    condense_hanging_nodes(
+      mortar::Coupling                                      &coupling,
+      const std::map<types::global_dof_index, unsigned int> &number,
+      const AffineConstraints<double>                       &hanging,
+      const IndexSet                                        &owned,
+      const MPI_Comm                                         comm)
+    {
+      // (p, w_hp, h) for the hanging nodes h this rank owns
+      std::vector<types::global_dof_index>         parents;
+      std::vector<std::pair<double, unsigned int>> weight_and_node;
+      for (const auto &[dof, h] : number)
+        if (owned.is_element(dof) && hanging.is_constrained(dof))
+          for (const auto &[p, w] : *hanging.get_constraint_entries(dof))
+            {
+              parents.push_back(p);
+              weight_and_node.emplace_back(w, h);
+            }
+      IndexSet all(owned.size());
+      all.add_indices(parents.begin(), parents.end());
+      const std::vector<unsigned int> owners =
+        Utilities::MPI::compute_index_owner(owned, all, comm);
+      // to each owner: p, w m_h, the number of entries, then (j, w M_hj)
+      std::map<unsigned int, std::vector<double>> rows;
+      for (unsigned int k = 0; k < parents.size(); ++k)
+        {
+          const auto [w, h] = weight_and_node[k];
+          std::vector<double> &row =
+            rows[owners[all.index_within_set(parents[k])]];
+          row.push_back(parents[k]);
+          row.push_back(w * coupling.weight[h]);
+          row.push_back(coupling.master[h].size());
+          for (const auto &[j, m] : coupling.master[h])
+            {
+              row.push_back(j);
+              row.push_back(w * m);
+            }
+        }
+      for (const auto &[rank, row] : Utilities::MPI::some_to_some(comm, rows))
+        for (std::size_t i = 0; i < row.size();)
+          {
+            const unsigned int p =
+              number.at(static_cast<types::global_dof_index>(row[i]));
+            coupling.weight[p] += row[i + 1];
+            const auto n = static_cast<std::size_t>(row[i + 2]);
+            std::map<unsigned int, double> merged(coupling.master[p].begin(),
+                                                  coupling.master[p].end());
+            for (std::size_t e = 0; e < n; ++e)
+              merged[static_cast<unsigned int>(row[i + 3 + 2 * e])] +=
+                row[i + 4 + 2 * e];
+            coupling.master[p].assign(merged.begin(), merged.end());
+            i += 3 + 2 * n;
+          }
     }
 
     // every rank's faces on every rank (each face has `n` nodes)
@@ -180,13 +328,21 @@ namespace dualcontact
                   integers.push_back(face.dofs[k][d]);
                 }
               reals.push_back(face.xi[k]);
+              for (unsigned int p = 0; p < max_parents; ++p)
+                {
+                  const bool has = p < face.parents[k].size();
+                  integers.push_back(has ? face.parents[k][p].first :
+                                           numbers::invalid_dof_index);
+                  reals.push_back(has ? face.parents[k][p].second : 0.);
+                }
             }
           for (unsigned int d = 0; d < dim; ++d)
             reals.push_back(face.normal[d]);
           integers.push_back(face.body);
         }
-      const unsigned int n_reals    = n * (dim + 1) + dim;
-      const unsigned int n_integers = n * dim + 1;
+      const unsigned int per_node   = dim + max_parents;
+      const unsigned int n_reals    = n * (1 + per_node) + dim;
+      const unsigned int n_integers = n * per_node + 1;
       const auto         all_reals  = Utilities::MPI::all_gather(comm, reals);
       const auto all_integers = Utilities::MPI::all_gather(comm, integers);
       std::vector<SurfaceFace<dim>> faces;
@@ -201,18 +357,24 @@ namespace dualcontact
             face.x.resize(n);
             face.dofs.resize(n);
             face.xi.resize(n);
+            face.parents.resize(n);
             for (unsigned int k = 0; k < n; ++k)
               {
+                const double                  *rk = r + k * (1 + per_node);
+                const types::global_dof_index *zk = z + k * per_node;
                 for (unsigned int d = 0; d < dim; ++d)
                   {
-                    face.x[k][d]    = r[k * (dim + 1) + d];
-                    face.dofs[k][d] = z[k * dim + d];
+                    face.x[k][d]    = rk[d];
+                    face.dofs[k][d] = zk[d];
                   }
-                face.xi[k] = r[k * (dim + 1) + dim];
+                face.xi[k] = rk[dim];
+                for (unsigned int p = 0; p < max_parents; ++p)
+                  if (zk[dim + p] != numbers::invalid_dof_index)
+                    face.parents[k].emplace_back(zk[dim + p], rk[dim + 1 + p]);
               }
             for (unsigned int d = 0; d < dim; ++d)
-              face.normal[d] = r[n * (dim + 1) + d];
-            face.body = z[n * dim];
+              face.normal[d] = r[n * (1 + per_node) + d];
+            face.body = z[n * per_node];
             faces.push_back(face);
           }
       return faces;
@@ -222,9 +384,10 @@ namespace dualcontact
   template <int dim>
   void
   ContactSet<dim>::couple_pairs(
-    const Mapping<dim>                                          &mapping,
-    const DoFHandler<dim>                                       &dof_handler,
-    const Scene<dim>                                            &scene,
+    const Mapping<dim>              &mapping,
+    const DoFHandler<dim>           &dof_handler,
+    const AffineConstraints<double> &hanging_node_constraints,
+    const Scene<dim>                &scene,
     const std::map<types::global_dof_index, types::boundary_id> &slave_id_of)
   {
     has_pairs_   = !scene.contact_pairs().empty();
@@ -233,13 +396,19 @@ namespace dualcontact
     if (!has_pairs_)
       return;
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    AssertThrow(dim == 2 && (dof_handler.get_fe().degree == 1 ||
-                             dof_handler.get_fe().reference_cell() ==
-                               ReferenceCells::get_hypercube<dim>()),
-                ExcMessage("Contact pairs are built in 2D, at degree 2-3 "
-                           "on quadrilaterals."));
-    // the nodes of a face: the support points of FE_Q(k) on it
-    const unsigned int n_face_nodes = dof_handler.get_fe().degree + 1;
+    AssertThrow(dof_handler.get_fe().degree == 1 ||
+                  (dim == 2 && dof_handler.get_fe().reference_cell() ==
+                                 ReferenceCells::get_hypercube<dim>()),
+                ExcMessage("Contact pairs are built at degree 1, and in 2D "
+                           "at degree 2-3 on quadrilaterals."));
+    // the nodes of a face: in 2D the support points of FE_Q(k) on it, in
+    // 3D its vertices (a mesh has one kind of cell)
+    const unsigned int              n_face_nodes = dim == 2 ?
+                                                     dof_handler.get_fe().degree + 1 :
+                                                     dof_handler.get_fe()
+                                          .reference_cell()
+                                          .face_reference_cell(0)
+                                          .n_vertices();
     const std::vector<unsigned int> body_of_coarse_cell =
       bodies_of_coarse_cells(dof_handler.get_triangulation());
     const bool node_to_segment = scene.pairs_node_to_segment();
@@ -257,6 +426,7 @@ namespace dualcontact
         const auto master_faces =
           gather(surface_faces(mapping,
                                dof_handler,
+                               hanging_node_constraints,
                                master_id,
                                body_of_coarse_cell,
                                [](const auto &cell) {
@@ -266,6 +436,7 @@ namespace dualcontact
                  comm);
         const auto slave_faces = surface_faces(mapping,
                                                dof_handler,
+                                               hanging_node_constraints,
                                                slave_id,
                                                body_of_coarse_cell,
                                                [](const auto &cell) {
@@ -300,35 +471,63 @@ namespace dualcontact
         std::map<types::global_dof_index, unsigned int>       master_number;
         std::vector<std::array<types::global_dof_index, dim>> master_dofs;
         std::vector<Point<dim>>                               master_points;
-        const auto master_segments = segments<dim>(master_faces,
-                                                   master_number,
-                                                   master_dofs,
-                                                   master_points);
-        // each master node's outward normal: the mean of its faces'
-        std::vector<Tensor<1, dim>> master_normals(master_points.size());
-        for (const mortar::Segment &segment : master_segments)
-          {
-            std::vector<unsigned int> on_segment = {segment.node[0],
-                                                    segment.node[1]};
-            on_segment.insert(on_segment.end(),
-                              segment.inner_node.begin(),
-                              segment.inner_node.end());
-            for (const unsigned int j : on_segment)
-              for (unsigned int d = 0; d < 2; ++d)
-                master_normals[j][d] += segment.normal[d];
-          }
         std::map<types::global_dof_index, unsigned int>       slave_number;
         std::vector<std::array<types::global_dof_index, dim>> slave_dofs;
         std::vector<Point<dim>>                               slave_points;
-        const auto                                            slave_segments =
-          segments<dim>(slave_faces, slave_number, slave_dofs, slave_points);
-        const mortar::Coupling coupling =
-          node_to_segment ? mortar::couple_node_to_segment(slave_segments,
-                                                           slave_number.size(),
-                                                           master_segments) :
-                            mortar::couple(slave_segments,
-                                           slave_number.size(),
-                                           master_segments);
+        const auto                                            master_segments =
+          segments(master_faces, master_number, master_dofs, master_points);
+        const auto slave_segments =
+          segments(slave_faces, slave_number, slave_dofs, slave_points);
+        mortar::Coupling coupling;
+        if constexpr (dim == 2)
+          coupling = node_to_segment ?
+                       mortar::couple_node_to_segment(slave_segments,
+                                                      slave_number.size(),
+                                                      master_segments) :
+                       mortar::couple(slave_segments,
+                                      slave_number.size(),
+                                      master_segments);
+        else
+          {
+            // a slave face sees the master faces in front of it and behind
+            // it as far as the two surfaces reach: in the reference
+            // configuration two curved bodies part as r^2 / (2 R*), and a
+            // node that a far master face gets is one with a large gap
+            std::vector<Point<dim>> both(master_points);
+            both.insert(both.end(), slave_points.begin(), slave_points.end());
+            const auto [lower, upper] =
+              BoundingBox<dim>(both).get_boundary_points();
+            const double reach = lower.distance(upper);
+            coupling           = mortar::couple(slave_segments,
+                                      slave_number.size(),
+                                      master_segments,
+                                      reach);
+          }
+        condense_hanging_nodes(coupling,
+                               slave_number,
+                               hanging_node_constraints,
+                               dof_handler.locally_owned_dofs(),
+                               comm);
+        // each master node's outward normal: the mean of its faces'
+        std::vector<Tensor<1, dim>> master_normals(master_points.size());
+        for (const SurfaceFace<dim> &face : master_faces)
+          for (const auto &dofs : face.dofs)
+            master_normals[master_number.at(dofs[0])] += face.normal;
+        // A hanging master node j moves as sum_p w_jp v_p: in a slave
+        // node's displacement coupling its c_sj goes to the nodes p it
+        // hangs on (also nodes of the master surface), so that the coupling
+        // holds only DoFs that are solved for. Its position stays in the
+        // gap: on a curved master it lies off the chord of its parents.
+        std::vector<std::vector<std::pair<unsigned int, double>>>
+          master_parents(master_points.size());
+        for (const SurfaceFace<dim> &face : master_faces)
+          for (unsigned int k = 0; k < face.dofs.size(); ++k)
+            {
+              auto &parents = master_parents[master_number.at(face.dofs[k][0])];
+              parents.clear();
+              for (const auto &[dof, w] : face.parents[k])
+                parents.emplace_back(master_number.at(dof), w);
+            }
 
         // the nodes of this pair: their masters, c_sj = M_sj / sum_j M_sj
         // (a node beyond the master's end sees a part of it; its gap is
@@ -354,17 +553,24 @@ namespace dualcontact
             ++covered;
             ContactNode<dim> &node = nodes[s];
             node.pair_slave_id     = slave_id;
-            Point<dim>     facing;
-            Tensor<1, dim> master_normal;
-            node.masters.clear();
+            Point<dim>                     facing;
+            Tensor<1, dim>                 master_normal;
+            std::map<unsigned int, double> condensed;
             for (const auto &[j, m] : coupling.master[i])
               if (m != 0.)
                 {
-                  node.masters.push_back({master_dofs[j], m / sum_m});
                   facing += (m / sum_m) * master_points[j];
                   master_normal +=
                     (m / sum_m) * master_normals[j] / master_normals[j].norm();
+                  if (master_parents[j].empty())
+                    condensed[j] += m / sum_m;
+                  else
+                    for (const auto &[p, w] : master_parents[j])
+                      condensed[p] += w * m / sum_m;
                 }
+            node.masters.clear();
+            for (const auto &[j, c] : condensed)
+              node.masters.push_back({master_dofs[j], c});
             // The direction of the contact: the bisector of the two
             // surfaces' outward normals, n_s and -n_master (equal for two
             // flat faces). Two curved bodies press along it: for two
@@ -377,9 +583,11 @@ namespace dualcontact
             node.gap0     = node.normal * (facing - node.position);
             // Two curved surfaces that touch overlap by O(h^2 / R) between
             // their chords: that is the discrete geometry, not bad input.
-            // An overlap beyond a tenth of the node's half-element (m_s at
-            // degree 1) is.
-            if (-node.gap0 > 0.1 * coupling.weight[i] && -node.gap0 > overlap)
+            // An overlap beyond a tenth of the node's spacing (m_s in 2D,
+            // its square root in 3D, at degree 1) is.
+            if (-node.gap0 >
+                  0.1 * std::pow(coupling.weight[i], 1. / (dim - 1)) &&
+                -node.gap0 > overlap)
               {
                 overlap    = -node.gap0;
                 overlap_at = node.position;
@@ -516,6 +724,7 @@ namespace dualcontact
   template void ContactSet<dim>::couple_pairs(                                 \
     const Mapping<dim> &,                                                      \
     const DoFHandler<dim> &,                                                   \
+    const AffineConstraints<double> &,                                         \
     const Scene<dim> &,                                                        \
     const std::map<types::global_dof_index, types::boundary_id> &);            \
   template const TrilinosWrappers::MPI::Vector &ContactSet<dim>::with_masters( \

@@ -606,6 +606,7 @@ namespace dualcontact
                          &free_motions,
                          previous_size,
                          same_stiffness};
+    system.weakly_held = &weakly_held;
     return system;
   }
 

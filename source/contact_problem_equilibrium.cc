@@ -141,10 +141,10 @@ namespace dualcontact
 
     // each owned DoF's body (+1) and component; the bodies' ids and
     // supports; the loads on each body
-    TrilinosWrappers::MPI::Vector body_plus_one(locally_owned_dofs,
-                                                mpi_communicator);
-    std::vector<unsigned int>     component(locally_owned_dofs.n_elements());
-    std::vector<unsigned int>     held(n_bodies, 0);
+    const TrilinosWrappers::MPI::Vector body_plus_one =
+      bodies_of_dofs(body_of_coarse_cell);
+    std::vector<unsigned int> component(locally_owned_dofs.n_elements());
+    std::vector<unsigned int> held(n_bodies, 0);
     std::vector<std::set<types::boundary_id>> ids(n_bodies);
     std::vector<types::global_dof_index>      dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -154,11 +154,8 @@ namespace dualcontact
           cell->get_dof_indices(dofs);
           for (unsigned int k = 0; k < dofs.size(); ++k)
             if (locally_owned_dofs.is_element(dofs[k]))
-              {
-                body_plus_one[dofs[k]] = body + 1.;
-                component[locally_owned_dofs.index_within_set(dofs[k])] =
-                  fe.system_to_component_index(k).first;
-              }
+              component[locally_owned_dofs.index_within_set(dofs[k])] =
+                fe.system_to_component_index(k).first;
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
               {
@@ -167,7 +164,6 @@ namespace dualcontact
                   held[body] = 1;
               }
         }
-    body_plus_one.compress(VectorOperation::insert);
     std::vector<double> load(n_bodies * dim, 0.);
     for (unsigned int k = 0; k < locally_owned_dofs.n_elements(); ++k)
       {

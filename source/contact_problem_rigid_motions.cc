@@ -1,7 +1,7 @@
 // ContactProblem, the rigid motions that nothing holds: combinations of
-// the rigid motions that no prescribed displacement and no contact node
-// resists. The proximal term holds them in each Uzawa step; the measures
-// of convergence leave them out (doc/theory.md §6).
+// the rigid motions of the bodies that no prescribed displacement and no
+// contact node resists. The proximal term holds them in each Uzawa step; the
+// measures of convergence leave them out (doc/theory.md §6).
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/dofs/dof_accessor.h>
@@ -34,80 +34,211 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 
 namespace dualcontact
 {
   template <int dim>
+  TrilinosWrappers::MPI::Vector
+  ContactProblem<dim>::bodies_of_dofs(
+    const std::vector<unsigned int> &body_of_coarse_cell) const
+  {
+    TrilinosWrappers::MPI::Vector        body_plus_one(locally_owned_dofs,
+                                                mpi_communicator);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int body = body_of<dim>(cell, body_of_coarse_cell);
+          cell->get_dof_indices(dofs);
+          for (const types::global_dof_index dof : dofs)
+            if (locally_owned_dofs.is_element(dof))
+              body_plus_one[dof] = body + 1.;
+        }
+    body_plus_one.compress(VectorOperation::insert);
+    return body_plus_one;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::find_free_motions()
   {
-    // Which combinations c of the rigid motions m_i does nothing hold? The
+    // Which combinations c of the rigid motions m_k of the bodies (motion
+    // i of body b, zero on the other bodies) does nothing hold? The
     // prescribed displacements hold those with G_D c != 0 (Scene), the
-    // contact those with a normal component at a contact node (frictionless:
-    // the obstacle pushes along n_s only) or any component there (friction
-    // holds the tangential ones too, also where a body near its sliding
+    // contact those that move a contact node's constraint: B_s c, the
+    // relative motion of slave node s and the master point it faces (its
+    // own motion against the obstacle), along n_s without friction (the
+    // contact pushes along n_s only), whole with friction (which holds
+    // the tangential motions too, also where a body near its sliding
     // limit slips). A combination is free iff c^T (G_D + G_C) c = 0.
-    const unsigned int n       = Scene<dim>::n_rigid_motions;
-    double             measure = 0.;
-    FullMatrix<double> gram = scene.rigid_motion_gram(triangulation, measure);
-    FullMatrix<double> contact_gram(n, n);
-    const bool         tangential = contact_set.friction;
-    double             area       = 0.;
+    const std::vector<unsigned int> body_of_coarse_cell =
+      bodies_of_coarse_cells(triangulation);
+    const unsigned int n_bodies =
+      1 +
+      *std::max_element(body_of_coarse_cell.begin(), body_of_coarse_cell.end());
+    const unsigned int       n_per_body = Scene<dim>::n_rigid_motions;
+    const unsigned int       n          = n_bodies * n_per_body;
+    double                   measure    = 0.;
+    const FullMatrix<double> gram =
+      scene.rigid_motion_gram(triangulation, measure, &body_of_coarse_cell);
+
+    // the motions as vectors of nodal values: motion i of the whole mesh
+    // times the indicator of body b
+    const TrilinosWrappers::MPI::Vector body_plus_one =
+      bodies_of_dofs(body_of_coarse_cell);
+    std::vector<TrilinosWrappers::MPI::Vector> motions;
+    for (unsigned int b = 0; b < n_bodies; ++b)
+      for (unsigned int i = 0; i < n_per_body; ++i)
+        {
+          TrilinosWrappers::MPI::Vector w(locally_owned_dofs, mpi_communicator);
+          interpolate_field<dim>(
+            mapping,
+            dof_handler,
+            [&](const Point<dim> &x) { return scene.rigid_motion(i, x); },
+            w);
+          for (const types::global_dof_index dof : locally_owned_dofs)
+            if (static_cast<unsigned int>(body_plus_one[dof]) != b + 1)
+              w[dof] = 0.;
+          w.compress(VectorOperation::insert);
+          motions.push_back(std::move(w));
+        }
+
+    // G: how far a combination moves what holds it, the supports and the
+    // contact nodes' constraints; H: how far it moves the supports and the
+    // contact nodes at all (the relative motion whole)
+    FullMatrix<double>                         held(gram), moved(gram);
+    double                                     area = 0.;
+    std::vector<Tensor<1, dim>>                relative(n);
+    std::vector<TrilinosWrappers::MPI::Vector> ghosted;
+    for (const TrilinosWrappers::MPI::Vector &w : motions)
+      ghosted.push_back(contact_set.with_masters(w));
+    FullMatrix<double> contact_held(n, n), contact_moved(n, n);
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const ContactNode<dim> &node = contact_set.nodes[s];
         area += node.weight;
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int c = 0; c < dim; ++c)
             {
-              const Tensor<1, dim> mi = scene.rigid_motion(i, node.position);
-              const Tensor<1, dim> mj = scene.rigid_motion(j, node.position);
-              contact_gram(i, j) +=
-                node.weight * (tangential ?
-                                 mi * mj :
-                                 (mi * node.normal) * (mj * node.normal));
+              relative[k][c] = ghosted[k][node.dofs[c]];
+              for (const MasterTerm<dim> &master : node.masters)
+                relative[k][c] -=
+                  master.coefficient * ghosted[k][master.dofs[c]];
+            }
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int l = 0; l < n; ++l)
+            {
+              const double whole = node.weight * (relative[k] * relative[l]);
+              contact_moved(k, l) += whole;
+              contact_held(k, l) += contact_set.friction ?
+                                      whole :
+                                      node.weight *
+                                        (relative[k] * node.normal) *
+                                        (relative[l] * node.normal);
             }
       }
-    Utilities::MPI::sum(contact_gram, mpi_communicator, contact_gram);
-    gram.add(1., contact_gram);
+    Utilities::MPI::sum(contact_held, mpi_communicator, contact_held);
+    Utilities::MPI::sum(contact_moved, mpi_communicator, contact_moved);
+    held.add(1., contact_held);
+    moved.add(1., contact_moved);
     measure += Utilities::MPI::sum(area, mpi_communicator);
 
-    LAPACKFullMatrix<double> g(n);
-    g = gram;
-    Vector<double>     eigenvalues;
-    FullMatrix<double> eigenvectors;
-    g.compute_eigenvalues_symmetric(
-      -1., 1e-10 * measure, 0., eigenvalues, eigenvectors);
+    // A combination that moves nothing (H c = 0) is free; among the others
+    // (H^(-1/2) whitened, so that each eigenvalue is the held fraction of a
+    // motion, the mean of cos^2 of the angle between it and n_s) those that
+    // G holds by less than 5 %: they move the contact nodes at right angles
+    // to n_s, to within about 13 degrees on average. That is a rigid
+    // plane's tangential motion (exactly at right angles), and between two
+    // bodies the sideways motions that only the discretisation error of
+    // the normals holds: two identical balls press along their plane of
+    // symmetry, whose normal the bisector n_s gives up to that error, and
+    // in the linear model (small sliding) the upper ball's sideways
+    // translations and its rotation about the axis are free. Held by that
+    // error (0.02-0.6 % of them in prm/two_spheres.prm; the motions that the
+    // contact holds, 94-100 %), they would take a step of F / chi in each
+    // Uzawa step along the force F that the same error leaves, and d(v)
+    // would not fall.
+    const auto all_eigen = [n](const FullMatrix<double> &matrix,
+                               Vector<double>           &values,
+                               FullMatrix<double>       &vectors) {
+      LAPACKFullMatrix<double> m(n);
+      m = matrix;
+      m.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
+                                      std::numeric_limits<double>::max(),
+                                      0.,
+                                      values,
+                                      vectors);
+    };
+    Vector<double>     h_values;
+    FullMatrix<double> h_vectors;
+    // the free combinations, and whether something holds them weakly
+    std::vector<std::pair<Vector<double>, bool>> free_combinations;
+    all_eigen(moved, h_values, h_vectors);
+    std::vector<Vector<double>> whitened;
+    for (unsigned int k = 0; k < h_values.size(); ++k)
+      {
+        Vector<double> c(n);
+        for (unsigned int i = 0; i < n; ++i)
+          c[i] = h_vectors(i, k);
+        if (h_values[k] <= 1e-10 * measure)
+          free_combinations.emplace_back(c, false);
+        else
+          {
+            c /= std::sqrt(h_values[k]);
+            whitened.push_back(c);
+          }
+      }
+    const unsigned int r = whitened.size();
+    if (r > 0)
+      {
+        FullMatrix<double> reduced(r, r);
+        Vector<double>     gc(n);
+        for (unsigned int k = 0; k < r; ++k)
+          {
+            held.vmult(gc, whitened[k]);
+            for (unsigned int l = 0; l < r; ++l)
+              reduced(l, k) = whitened[l] * gc;
+          }
+        LAPACKFullMatrix<double> g(r);
+        g = reduced;
+        Vector<double>     values;
+        FullMatrix<double> vectors;
+        g.compute_eigenvalues_symmetric(
+          -std::numeric_limits<double>::max(), 0.05, 0., values, vectors);
+        for (unsigned int e = 0; e < values.size(); ++e)
+          {
+            Vector<double> c(n);
+            for (unsigned int k = 0; k < r; ++k)
+              c.add(vectors(k, e), whitened[k]);
+            free_combinations.emplace_back(c, values[e] > 1e-10);
+          }
+      }
 
-    // each free combination as a vector of the condensed space (its nodal
-    // values), improved by one step of inverse iteration with K = A + chi M,
-    // then orthonormal in the Euclidean inner product of the vectors, the
-    // one d(v) is measured in (Gram-Schmidt). The inverse iteration matters
-    // where hanging nodes lie on a curved boundary: a hanging node sits on
-    // the curve, not at the middle of its parents, so the interpolated
-    // rotation is not in the constrained space, and the motion nothing holds
-    // is a rotation plus a small deformation near those nodes, which K^-1
+    // each free combination as a vector of the condensed space, improved
+    // by one step of inverse iteration with K = A + chi M, then orthonormal
+    // in the Euclidean inner product of the vectors, the one d(v) is
+    // measured in (Gram-Schmidt). The inverse iteration matters where
+    // hanging nodes lie on a curved boundary: a hanging node sits on the
+    // curve, not at the middle of its parents, so the interpolated rotation
+    // is not in the constrained space, and the motion nothing holds is a
+    // rotation plus a small deformation near those nodes, which K^-1
     // brings out (a translation is kept exactly: K w = chi M w).
     free_motions.clear();
+    weakly_held.clear();
     std::unique_ptr<ElasticSolver<dim>> solver;
-    for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+    for (const auto &[c, weakly] : free_combinations)
       {
         TrilinosWrappers::MPI::Vector w(locally_owned_dofs, mpi_communicator);
-        interpolate_field<dim>(
-          mapping,
-          dof_handler,
-          [&](const Point<dim> &x) {
-            Tensor<1, dim> m;
-            for (unsigned int i = 0; i < n; ++i)
-              m += eigenvectors(i, k) * scene.rigid_motion(i, x);
-            return m;
-          },
-          w);
+        double                        rotation = 0.;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            w.add(c[k], motions[k]);
+            if (k % n_per_body >= dim)
+              rotation += std::abs(c[k]);
+          }
         homogeneous_constraints.distribute(w);
         // a translation is exact in the constrained space: no solve
-        double rotation = 0.;
-        for (unsigned int i = dim; i < n; ++i)
-          rotation += std::abs(eigenvectors(i, k));
         if (rotation > 1e-12 && !solver)
           {
             solver = std::make_unique<ElasticSolver<dim>>(parameters.solver);
@@ -135,13 +266,17 @@ namespace dualcontact
           {
             w /= norm;
             free_motions.push_back(std::move(w));
+            weakly_held.push_back(weakly);
           }
       }
   }
-
 
   template void
   ContactProblem<2>::find_free_motions();
   template void
   ContactProblem<3>::find_free_motions();
+  template TrilinosWrappers::MPI::Vector
+  ContactProblem<2>::bodies_of_dofs(const std::vector<unsigned int> &) const;
+  template TrilinosWrappers::MPI::Vector
+  ContactProblem<3>::bodies_of_dofs(const std::vector<unsigned int> &) const;
 } // namespace dualcontact

@@ -134,7 +134,8 @@ namespace dualcontact
           node.body_normal /= node.body_normal.norm();
         nodes.push_back(node);
       }
-    couple_pairs(mapping, dof_handler, scene, slave_id_of);
+    couple_pairs(
+      mapping, dof_handler, hanging_node_constraints, scene, slave_id_of);
     place_obstacle(scene, comm);
 
     l1.assign(nodes.size(), 0.);

@@ -493,7 +493,8 @@ namespace dualcontact
     Coupling
     couple(const std::vector<Face> &slave,
            const unsigned int       n_slave_nodes,
-           const std::vector<Face> &master)
+           const std::vector<Face> &master,
+           const double             reach)
     {
       Coupling coupling;
       coupling.weight.assign(n_slave_nodes, 0.);
@@ -551,7 +552,8 @@ namespace dualcontact
           const std::vector<Point<2>> slave_polygon = polygon(xs);
           const double slave_area = 0.5 * twice_signed_area(slave_polygon);
 
-          // the slave box, enlarged by a quarter of the face's diameter
+          // the slave box, enlarged by a quarter of the face's diameter,
+          // and by the reach along its normal
           Box    box(s.x);
           double diameter = 0.;
           for (const Point<3> &p : s.x)
@@ -559,8 +561,8 @@ namespace dualcontact
               diameter = std::max(diameter, p.distance(q));
           for (unsigned int d = 0; d < 3; ++d)
             {
-              box.lo[d] -= 0.25 * diameter;
-              box.hi[d] += 0.25 * diameter;
+              box.lo[d] -= 0.25 * diameter + reach * std::abs(n0[d]);
+              box.hi[d] += 0.25 * diameter + reach * std::abs(n0[d]);
             }
 
           grid.for_cells(box, [&](const unsigned int cell) {

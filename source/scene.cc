@@ -178,9 +178,10 @@ namespace dualcontact
   {
     /**
      * The Gram matrix G_ij = int_{fixed} m_i.m_j + int_{normal fixed}
-     * (m_i.n)(m_j.n) of displacement modes m_i(x) over the constrained part
-     * of the boundary, summed over the ranks; `measure` gets that part's
-     * length (area). A mode is left free by the constraints iff G m = 0.
+     * (m_i.n)(m_j.n) of displacement modes m_i(x) (mode(i, x, cell), on the
+     * cell at x) over the constrained part of the boundary, summed over the
+     * ranks; `measure` gets that part's length (area). A mode is left free
+     * by the constraints iff G m = 0.
      */
     template <int dim, typename Mode>
     FullMatrix<double>
@@ -223,8 +224,9 @@ namespace dualcontact
                       for (unsigned int j = 0; j < n_modes; ++j)
                         gram(i, j) +=
                           fe_face.JxW(q) *
-                          (all ? mode(i, x) * mode(j, x) :
-                                 (mode(i, x) * n) * (mode(j, x) * n));
+                          (all ?
+                             mode(i, x, cell) * mode(j, x, cell) :
+                             (mode(i, x, cell) * n) * (mode(j, x, cell) * n));
                   }
               }
       const MPI_Comm comm = triangulation.get_communicator();
@@ -351,19 +353,27 @@ namespace dualcontact
         },
         lower);
       join_bodies<dim>({&lower, &upper}, result);
-      for (const auto &cell : result.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            {
-              const bool   on_upper = cell->material_id() == 1;
-              const double radius   = on_upper ? upper_radius : lower_radius;
-              // the flat sides pass through the discs' centres
-              const double flat =
-                on_upper ? upper_center[dim - 1] : lower_center[dim - 1];
-              const bool is_flat =
-                std::abs(face->center()[dim - 1] - flat) < 1e-8 * radius;
-              face->set_boundary_id((on_upper ? 0 : 2) + (is_flat ? 1 : 0));
-            }
+      // The ids of the faces and, in 3D, of their edges: the manifolds
+      // follow the edges' ids, and a new mesh has 0 on every boundary edge.
+      // The flat faces first, then the curved ones: a rim edge lies on the
+      // sphere (and in the flat side through its centre) and takes the
+      // sphere's id.
+      for (const bool flat_pass : {true, false})
+        for (const auto &cell : result.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const bool   on_upper = cell->material_id() == 1;
+                const double radius   = on_upper ? upper_radius : lower_radius;
+                // the flat sides pass through the discs' centres
+                const double flat =
+                  on_upper ? upper_center[dim - 1] : lower_center[dim - 1];
+                const bool is_flat =
+                  std::abs(face->center()[dim - 1] - flat) < 1e-8 * radius;
+                if (is_flat == flat_pass)
+                  face->set_all_boundary_ids((on_upper ? 0 : 2) +
+                                             (is_flat ? 1 : 0));
+              }
     }
 
     /**
@@ -1076,7 +1086,7 @@ namespace dualcontact
       ids_with(BoundaryCondition::fixed),
       ids_with(BoundaryCondition::normal_fixed),
       1,
-      [&e](const unsigned int, const Point<dim> &) { return e; },
+      [&e](const unsigned int, const Point<dim> &, const auto &) { return e; },
       measure);
     return gram(0, 0) <= 1e-12 * measure;
   }
@@ -1102,16 +1112,24 @@ namespace dualcontact
 
   template <int dim>
   FullMatrix<double>
-  Scene<dim>::rigid_motion_gram(const Triangulation<dim> &triangulation,
-                                double                   &measure) const
+  Scene<dim>::rigid_motion_gram(const Triangulation<dim>        &triangulation,
+                                double                          &measure,
+                                const std::vector<unsigned int> *bodies) const
   {
+    const unsigned int n_bodies =
+      bodies == nullptr ? 1 :
+                          1 + *std::max_element(bodies->begin(), bodies->end());
     return constrained_gram(
       triangulation,
       ids_with(BoundaryCondition::fixed),
       ids_with(BoundaryCondition::normal_fixed),
-      n_rigid_motions,
-      [this](const unsigned int i, const Point<dim> &x) {
-        return rigid_motion(i, x);
+      n_bodies * n_rigid_motions,
+      [this,
+       bodies](const unsigned int i, const Point<dim> &x, const auto &cell) {
+        if (bodies != nullptr &&
+            body_of<dim>(cell, *bodies) != i / n_rigid_motions)
+          return Tensor<1, dim>();
+        return rigid_motion(i % n_rigid_motions, x);
       },
       measure);
   }

@@ -376,12 +376,13 @@ namespace dualcontact
     // previous solve's
     newton.reset(system.same_stiffness);
     // this solve's copy of the system: its proximal weight may be lowered
-    ContactSystem                 step_system = system;
-    ContactStatistics             statistics;
-    TrilinosWrappers::MPI::Vector v_previous(v);
-    std::vector<IterationRecord>  history;
-    unsigned int                  lowered_at = 0;
-    const auto                    say = [observer](const std::string &text) {
+    ContactSystem                       step_system = system;
+    ContactStatistics                   statistics;
+    TrilinosWrappers::MPI::Vector       v_previous(v);
+    const TrilinosWrappers::MPI::Vector v_start(v);
+    std::vector<IterationRecord>        history;
+    unsigned int                        lowered_at = 0;
+    const auto say = [observer](const std::string &text) {
       if (observer != nullptr)
         observer->note(text);
     };
@@ -389,6 +390,21 @@ namespace dualcontact
       {
         Timer timer(v.get_mpi_communicator(), true);
         v_previous = v;
+        // The free motions that something holds weakly keep the start's
+        // value: along them the proximal term pulls toward v_start, not
+        // toward the last v. The force along them that the same weak hold
+        // leaves (between two bodies, the normals' discretisation error)
+        // then moves them once by F / chi, not by F / chi in every step
+        // (doc/theory.md §6). Along the motions held by nothing at all no
+        // force acts, and the last v is the anchor.
+        if (system.free_motions != nullptr && system.weakly_held != nullptr)
+          for (unsigned int i = 0; i < system.free_motions->size(); ++i)
+            if ((*system.weakly_held)[i])
+              {
+                const TrilinosWrappers::MPI::Vector &w =
+                  (*system.free_motions)[i];
+                v_previous.add(w * v_start - w * v_previous, w);
+              }
         NewtonStatistics newton_statistics;
         try
           {

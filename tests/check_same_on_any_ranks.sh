@@ -20,6 +20,9 @@
 #   mesh every rank holds whole and partitions by itself.
 # - pairs_same_on_any_ranks: prm/two_cylinders.prm, two bodies in contact,
 #   graded and refined adaptively.
+# - pairs_3d_same_on_any_ranks, spheres_same_on_any_ranks: the same in 3D,
+#   prm/two_blocks_patch_3d.prm (hexahedra, tetrahedra) and
+#   prm/two_spheres.prm (graded, then refined adaptively).
 set -euo pipefail
 program="$1"
 mpirun="$2"

@@ -756,8 +756,14 @@ namespace
     scene.dim =
       get(scene, "Geometry", "Dimension").value_or("2") == "3" ? 3 : 2;
     scene.geometry = get(scene, "Geometry", "Type").value_or("rectangle");
-    scene.obstacle = get(scene, "Obstacle", "Type").value_or("plane");
-    scene.law      = get(scene, "Friction", "Law").value_or("none");
+    // a scene whose contact is between bodies alone has no obstacle: its
+    // entries are defaults that nothing reads
+    const bool obstacle = get(scene, "Boundary conditions", "Conditions")
+                            .value_or("")
+                            .find("contact") != std::string::npos;
+    scene.obstacle =
+      obstacle ? get(scene, "Obstacle", "Type").value_or("plane") : "";
+    scene.law = get(scene, "Friction", "Law").value_or("none");
     return scene;
   }
 
@@ -1260,14 +1266,16 @@ namespace
          if (s.obstacle == "plane")
            candidates.push_back({{"Foundation", "Point"}, "0, 0"}),
              candidates.push_back({{"Foundation", "Normal"}, "0, 1"});
-         if (s.geometry == "rectangle")
+         if (s.geometry == "rectangle" || s.geometry == "two blocks")
            candidates.push_back({{"Geometry", "Lower left corner"}, "0, 0"}),
              candidates.push_back({{"Geometry", "Upper right corner"}, "1, 1"}),
              candidates.push_back({{"Geometry", "Subdivisions"}, "1, 1"});
-         if (s.geometry == "half disc")
+         if (s.geometry == "half disc" || s.geometry == "two half discs")
            candidates.push_back({{"Geometry", "Center"}, "0, 0"});
          if (s.obstacle == "sphere")
            candidates.push_back({{"Obstacle", "Center"}, "0, 0"});
+         if (candidates.empty())
+           return std::nullopt;
          const auto &[t, value] = pick(candidates);
          return with_value(
            s, t, value, "5,6", "the 2D default written out in a 3D scene");

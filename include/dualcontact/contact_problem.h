@@ -337,9 +337,14 @@ namespace dualcontact
     double
     net_load(const Tensor<1, dim> &direction) const;
     /** The rigid motions that neither the prescribed displacements nor the
-     * contact hold, into free_motions (doc/theory.md §6). */
+     * contact hold, into free_motions (doc/theory.md §6); each body moves
+     * on its own. */
     void
     find_free_motions();
+    /** Each owned DoF's body (bodies_of_coarse_cells()) plus one, and 0 at
+     * the DoFs not owned. */
+    TrilinosWrappers::MPI::Vector
+    bodies_of_dofs(const std::vector<unsigned int> &body_of_coarse_cell) const;
     const Vector<float> &
     refinement_indicator();
     void
@@ -409,8 +414,10 @@ namespace dualcontact
     // assembly
     std::array<double, 3> applied_load{};
     double                held_by_friction_pressure = 0.;
-    // the rigid motions that nothing holds (ContactSystem::free_motions)
+    // the rigid motions that nothing holds (ContactSystem::free_motions),
+    // and which of them something holds weakly (ContactSystem::weakly_held)
     std::vector<TrilinosWrappers::MPI::Vector> free_motions;
+    std::vector<bool>                          weakly_held;
     NewtonSolver<dim>                          newton;
     UzawaIteration<dim>                        uzawa;
     ThresholdIteration<dim>                    threshold_iteration;

@@ -396,13 +396,16 @@ namespace dualcontact
     /**
      * The master terms and gaps of the nodes on the slave ids of the
      * scene's contact pairs (contact_pairs.cc): drops the nodes that face
-     * no master, and counts them.
+     * no master, and counts them. A hanging slave node is no contact node:
+     * its coupling goes to the nodes it hangs on, with the weights of
+     * `hanging_node_constraints`, as its weight m_s does.
      */
     void
     couple_pairs(
-      const Mapping<dim>                                          &mapping,
-      const DoFHandler<dim>                                       &dof_handler,
-      const Scene<dim>                                            &scene,
+      const Mapping<dim>              &mapping,
+      const DoFHandler<dim>           &dof_handler,
+      const AffineConstraints<double> &hanging_node_constraints,
+      const Scene<dim>                &scene,
       const std::map<types::global_dof_index, types::boundary_id> &slave_id_of);
 
     bool                                  has_pairs_   = false;

@@ -83,9 +83,12 @@ namespace dualcontact
     /**
      * m_s and M_sj for the slave faces against the master faces (see the
      * top of this file). A pair adds nothing if the normals are given and
-     * n_slave . n_master >= -1/2, if the boxes around the faces (the slave's
-     * enlarged by a quarter of its diameter, so that faces a little apart
-     * still meet) are apart, if the master projects onto a sliver of the
+     * n_slave . n_master >= -1/2, if the boxes around the faces are apart
+     * (the slave's enlarged by a quarter of its diameter, so that faces a
+     * little apart still meet, and by `reach` along its normal, so that the
+     * master faces within that distance in front of it or behind it are
+     * seen: two curved bodies part as r^2 / (2 R*) away from where they
+     * touch), if the master projects onto a sliver of the
      * plane (it stands at a right angle to the slave), or if the clipped
      * polygon's area is at most 1e-14 times the slave face's. The master
      * faces are sorted into the cells of a uniform grid by their boxes, so
@@ -94,7 +97,8 @@ namespace dualcontact
     Coupling
     couple(const std::vector<Face> &slave,
            unsigned int             n_slave_nodes,
-           const std::vector<Face> &master);
+           const std::vector<Face> &master,
+           double                   reach = 0.);
   } // namespace mortar
 } // namespace dualcontact
 

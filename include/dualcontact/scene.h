@@ -161,11 +161,15 @@ namespace dualcontact
      * (m_i.n)(m_j.n) of the rigid motions m_i over the part of the boundary
      * where displacements are prescribed, summed over the ranks; `measure`
      * gets that part's length (area). A combination c of rigid motions is
-     * left free by the boundary conditions iff G c = 0. Collective.
+     * left free by the boundary conditions iff G c = 0. With `bodies`
+     * (bodies_of_coarse_cells()) each body moves on its own: the index
+     * b n_rigid_motions + i is the motion i of body b, zero on the others.
+     * Collective.
      */
     FullMatrix<double>
-    rigid_motion_gram(const Triangulation<dim> &triangulation,
-                      double                   &measure) const;
+    rigid_motion_gram(const Triangulation<dim>        &triangulation,
+                      double                          &measure,
+                      const std::vector<unsigned int> *bodies = nullptr) const;
 
     /**
      * Whether the rigid translation along e is left free by the fixed and

@@ -140,7 +140,9 @@ namespace dualcontact
       "Both ids keep the condition 'free' in 'Conditions', lie on different "
       "bodies (parts of the mesh that share no vertex), and an id belongs to "
       "one pair only. The friction law of subsection Friction holds on every "
-      "pair as on the obstacle's 'contact' ids.");
+      "pair as on the obstacle's 'contact' ids. In 2D at degree 1-3 "
+      "(quadrilaterals) or 1 (triangles), in 3D at degree 1 (hexahedra, "
+      "tetrahedra).");
     declarer.declare_entry(
       "Pair coupling",
       "dual mortar",
@@ -150,7 +152,7 @@ namespace dualcontact
       "with the dual basis, integrated exactly; passes the contact patch "
       "test on non-matching meshes), or 'node to segment' (the gap to the "
       "master point its normal meets, one pass; fails that test, for "
-      "comparison: doc/two_bodies.md). Dimensionless.");
+      "comparison, in 2D at degree 1: doc/two_bodies.md). Dimensionless.");
     declarer.leave_subsection();
   }
 
@@ -198,14 +200,20 @@ namespace dualcontact
                            std::to_string(n_ids - 1) + ").",
                          exit_inconsistent);
 
-    // the mortar segments are intervals (2D); at degree 2-3 the nodes of a
-    // face are FE_Q(k)'s support points on it (quadrilaterals), and the
-    // node-to-segment comparison takes the vertices alone (degree 1)
+    // the mortar segments: intervals in 2D, where at degree 2-3 the nodes
+    // of a face are FE_Q(k)'s support points on it (quadrilaterals), and
+    // the node-to-segment comparison takes the vertices alone (degree 1);
+    // polygons of faces with linear or bilinear traces in 3D (degree 1)
     const unsigned int degree = parameters.discretization.degree;
-    if (!contact_pairs.empty() && dim != 2)
+    if (!contact_pairs.empty() && dim == 3 && degree > 1)
       throw InputError("The entry <Boundary conditions/Contact pairs> couples "
-                       "two bodies in 2D: set <Geometry/Dimension> to 2, or "
-                       "put a rigid obstacle in the body's place.",
+                       "two bodies in 3D at degree 1 only: set "
+                       "<Discretization/Polynomial degree> to 1.",
+                       exit_inconsistent);
+    if (!contact_pairs.empty() && dim == 3 && node_to_segment)
+      throw InputError("The entry <Boundary conditions/Pair coupling> = node "
+                       "to segment is a comparison in 2D: set it to dual "
+                       "mortar in 3D.",
                        exit_inconsistent);
     if (!contact_pairs.empty() && degree > 1 &&
         geometry.cell_kind == CellKind::simplex)

@@ -130,6 +130,66 @@ TEST_CASE("The contact patch test between two bodies at degrees 2 and 3: "
       }
 }
 
+TEST_CASE("The contact patch test between two bodies in 3D on non-matching "
+          "meshes (5 x 5 over 7 x 7 faces, then 10 x 10 over 14 x 14; "
+          "hexahedra and tetrahedra): the pressure p at every slave node and "
+          "the exact displacement, frictionless and all stick",
+          "[pairs]")
+{
+  // prm/two_blocks_patch_3d.prm with the shear q = 0.2 along x under
+  // F = 0.4: sigma_xz = 0.2 added to the uniform stress (the tractions
+  // (0.2, 0, -1) on the top and -+0.2 along z on the sides x = 0, 2), and
+  // the shear strain in the exact solution, u_x = q / mu z
+  const std::string stick_3d =
+    "subsection Boundary conditions\n"
+    "  set Tractions = 0: 0.3/0.7; 0; -0.2, 1: -0.3/0.7; 0; 0.2, "
+    "2: 0; 0.3/0.7; 0, 3: 0; -0.3/0.7; 0, 5: 0.2; 0; -1\nend\n"
+    "subsection Friction\n  set Law = coulomb\n  set Coefficient = 0.4\nend\n"
+    "subsection Exact solution\n"
+    "  set Displacement = 0.2*2.6/1000*z; 0; -1.3*0.4/0.7/1000*z\nend\n"
+    "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
+  for (const bool friction : {false, true})
+    for (const std::string cells : {"quadrilateral", "simplex"})
+      {
+        INFO((friction ? "all stick under the shear 0.2" : "frictionless")
+             << " on " << cells << " cells");
+        const SceneRun<3> run("two_blocks_patch_3d.prm",
+                              (friction ? stick_3d : tight) +
+                                "subsection Geometry\n  set Cell type = " +
+                                cells + "\nend\n");
+        Tensor<1, 3>      q;
+        q[0]                = friction ? 0.2 : 0.;
+        const auto [l1, l2] = deviation(run, 1., q);
+        for (const CycleResult &r : run.problem->results())
+          {
+            INFO("cycle " << r.mesh.cycle << ": error "
+                          << r.errors.error_L2 / r.errors.norm_L2);
+            // the upper block's 5 x 5 (10 x 10) faces: 6 x 6 (11 x 11) slave
+            // nodes, all facing the master
+            const unsigned int n = 5 * (1u << r.mesh.cycle) + 1;
+            CHECK(r.solve.n_contact_nodes == n * n);
+            CHECK(r.solve.n_uncovered == 0);
+            CHECK(r.solve.n_active == r.solve.n_contact_nodes);
+            CHECK(r.errors.error_L2 <= 1e-8 * r.errors.norm_L2);
+            // the load p times the area 4 crosses the interface, and the
+            // forces on the two bodies are equal and opposite
+            CHECK(r.zone.contact_force == Approx(4.).epsilon(1e-10));
+            for (unsigned int c = 0; c < 3; ++c)
+              CHECK(std::abs(r.zone.on_slave_body[c] +
+                             r.zone.on_master_body[c]) <= 1e-10 * 4.);
+            CHECK(r.zone.on_master_body[2] == Approx(-4.).epsilon(1e-10));
+            if (friction)
+              {
+                CHECK(r.solve.n_stick == r.solve.n_contact_nodes);
+                CHECK(r.zone.on_master_body[0] == Approx(0.8).epsilon(1e-10));
+              }
+          }
+        INFO("largest |l1 - p| " << l1 << ", |l2 - q| " << l2);
+        CHECK(l1 <= 1e-8);
+        CHECK(l2 <= 1e-8);
+      }
+}
+
 TEST_CASE("A body on a body on a rigid plane: the patch test through the "
           "pair and the obstacle at once",
           "[pairs]")
@@ -229,6 +289,29 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
       CHECK(error.code == exit_inconsistent);
       CHECK(contains(error.message, words));
     }
+  // in 3D: degree 1 and the dual mortar only; the 3D overlap is measured
+  // against the square root of the slave weight
+  const std::vector<std::pair<std::string, std::string>> cases_3d = {
+    {"subsection Discretization\n  set Polynomial degree = 2\nend\n",
+     "couples two bodies in 3D at degree 1 only"},
+    {"subsection Boundary conditions\n  set Pair coupling = node to "
+     "segment\nend\n",
+     "node to segment is a comparison in 2D"},
+    // the upper block's top against the lower block's bottom, 2 below it
+    {"subsection Boundary conditions\n  set Contact pairs = 5: 4\n"
+     "  set Conditions = 0: traction, 1: traction, 2: traction, 3: "
+     "traction\n  set Tractions = 0: 0.3/0.7; 0; 0, 1: -0.3/0.7; 0; 0, "
+     "2: 0; 0.3/0.7; 0, 3: 0; -0.3/0.7; 0\nend\n",
+     "starts with the bodies overlapping: slave nodes lie up to 2.00e+00"}};
+  for (const auto &[overrides, words] : cases_3d)
+    {
+      const CaughtError error = catch_input_error(
+        [&] { const SceneRun<3> run("two_blocks_patch_3d.prm", overrides); });
+      INFO(overrides << ": " << error.message);
+      CHECK(error.thrown);
+      CHECK(error.code == exit_inconsistent);
+      CHECK(contains(error.message, words));
+    }
 }
 
 TEST_CASE("A body that only its contact pair could hold, not pressed onto "
@@ -301,6 +384,40 @@ TEST_CASE("Hertz, two cylinders (prm/two_cylinders.prm): identical, then E2 "
       CHECK(results.back().zone.pressure_error <
             0.6 * results[results.size() - 2].zone.pressure_error);
     }
+}
+
+TEST_CASE("Hertz, two spheres (prm/two_spheres.prm): the peak pressure "
+          "within 2 % and the contact radius within one contact element at "
+          "3e5 DoFs",
+          "[pairs]")
+{
+  const SceneRun<3>  run("two_spheres.prm", "");
+  const CycleResult &r = run.last();
+  // Hertz for the load the discrete top carries (a polygon of the disc of
+  // radius 1 under q = 0.466388): a and p0 scale as P^(1/3) from a = 0.1,
+  // p0 = 69.948 at P = pi q
+  const double P       = r.zone.contact_force;
+  const double scale   = std::cbrt(P / (numbers::PI * 0.46638811162460175));
+  const double a       = 0.1 * scale;
+  const double p0      = 69.94756151337502 * scale;
+  const double element = line_spacing(run, a);
+  INFO("DoFs " << r.mesh.n_dofs << ", P " << P << ", peak "
+               << r.zone.max_pressure << " (Hertz " << p0 << "), radius "
+               << r.zone.edge_half_width << " (Hertz " << a << ", element "
+               << element << ")");
+  CHECK(r.mesh.n_dofs <= 300000);
+  CHECK(std::abs(r.zone.max_pressure - p0) <= 0.02 * p0);
+  CHECK(element > 0.);
+  CHECK(std::abs(r.zone.edge_half_width - a) <= element);
+  // the load crosses the interface whole, and the bodies' forces balance
+  CHECK(r.zone.on_slave_body[2] == Approx(P).epsilon(1e-8));
+  for (unsigned int c = 0; c < 3; ++c)
+    CHECK(std::abs(r.zone.on_slave_body[c] + r.zone.on_master_body[c]) <=
+          1e-10 * P);
+  // the upper ball's sideways motions and its turn about the axis are held
+  // by nothing but the proximal term: every mesh converges all the same
+  for (const CycleResult &cycle : run.problem->results())
+    CHECK(cycle.solve.uzawa_steps <= 15);
 }
 
 TEST_CASE("Hertz, two cylinders at degree 2 (curved faces along their "
