@@ -34,9 +34,9 @@ namespace dualcontact
     // One face of a pair's surface as the coupling needs it: its nodes'
     // positions and DoFs (in 2D the support points of FE_Q(k) on the face:
     // the two vertices first, then the k - 1 inner ones with their
-    // coordinate xi along the face; in 3D its vertices), for a hanging node the first DoFs of the nodes it
-    // hangs on and their weights, its outward normal, and the body it
-    // belongs to.
+    // coordinate xi along the face; in 3D its vertices), for a hanging node the
+    // first DoFs of the nodes it hangs on and their weights, its outward
+    // normal, and the body it belongs to.
     template <int dim>
     struct SurfaceFace
     {
