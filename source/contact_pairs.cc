@@ -6,6 +6,7 @@
 // vector, the Newton matrix's extra entries).
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
 #include <deal.II/fe/fe.h>
@@ -17,6 +18,7 @@
 #include <dualcontact/parameter_helpers.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <set>
@@ -26,15 +28,54 @@ namespace dualcontact
 {
   namespace
   {
-    // The most nodes a hanging node hangs on: the two ends of a coarse
-    // face's edge on a surface in 3D at degree 1, or the four corners of
-    // a coarse face
-    constexpr unsigned int max_parents = 4;
+    // The most nodes a hanging node of a face of `fe` hangs on: in 2D the
+    // k + 1 nodes of a coarse face (at most 4), in 3D the nodes of a coarse
+    // face, (k + 1)^2 on a quadrilateral (4 at degree 1: the two ends of an
+    // edge or the four corners)
+    template <int dim>
+    unsigned int
+    max_parents(const FiniteElement<dim> &fe)
+    {
+      return dim == 2 ? 4u : std::max(4u, (fe.degree + 1) * (fe.degree + 1));
+    }
+
+    // The coordinates (xi, eta) of the point x in the bilinear map of a
+    // quadrilateral's vertices v (lexicographic), nearest to it
+    // (Gauss-Newton from the centre; one step on a flat parallelogram)
+    std::array<double, 2>
+    face_coordinates(const std::array<Point<3>, 4> &v, const Point<3> &x)
+    {
+      double xi = 0.5, eta = 0.5;
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          const Tensor<1, 3> t0 =
+            (1. - eta) * (v[1] - v[0]) + eta * (v[3] - v[2]);
+          const Tensor<1, 3> t1 =
+            (1. - xi) * (v[2] - v[0]) + xi * (v[3] - v[1]);
+          const Point<3> y = (1. - xi) * (1. - eta) * v[0] +
+                             xi * (1. - eta) * v[1] + (1. - xi) * eta * v[2] +
+                             xi * eta * v[3];
+          const Tensor<1, 3> r = x - y;
+          const double       a = t0 * t0, b = t0 * t1, c = t1 * t1;
+          const double       det = a * c - b * b;
+          if (!(det > 0.))
+            break;
+          const double dxi  = (c * (t0 * r) - b * (t1 * r)) / det;
+          const double deta = (a * (t1 * r) - b * (t0 * r)) / det;
+          xi += dxi;
+          eta += deta;
+          if (std::abs(dxi) + std::abs(deta) <= 1e-14)
+            break;
+        }
+      return {{xi, eta}};
+    }
 
     // One face of a pair's surface as the coupling needs it: its nodes'
     // positions and DoFs (in 2D the support points of FE_Q(k) on the face:
     // the two vertices first, then the k - 1 inner ones with their
-    // coordinate xi along the face; in 3D its vertices), for a hanging node the
+    // coordinate xi along the face; in 3D a triangle's vertices, or the
+    // (k + 1)^2 support points of FE_Q(k) on a quadrilateral in
+    // lexicographic order, mortar_3d.h), for a hanging node the
     // first DoFs of the nodes it hangs on and their weights, its outward
     // normal, and the body it belongs to.
     template <int dim>
@@ -48,6 +89,32 @@ namespace dualcontact
       Tensor<1, dim> normal;
       unsigned int   body = 0;
     };
+
+    // The support points of FE_Q(k) on face f of a cell: the DoFs of each
+    // (one per component) into dofs_of[base], base the point's number in
+    // the base element, and take(x, base) with its position x.
+    template <int dim, typename Cell, typename Take>
+    void
+    support_points_on_face(
+      const Mapping<dim>                         &mapping,
+      const Cell                                 &cell,
+      const unsigned int                          f,
+      const std::vector<types::global_dof_index> &dof_indices,
+      std::map<unsigned int, std::array<types::global_dof_index, dim>> &dofs_of,
+      const Take                                                       &take)
+    {
+      const FiniteElement<dim> &fe = cell->get_fe();
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        if (fe.has_support_on_face(i, f))
+          {
+            const auto [component, base] = fe.system_to_component_index(i);
+            dofs_of[base][component]     = dof_indices[i];
+            if (component == 0)
+              take(mapping.transform_unit_to_real_cell(
+                     cell, fe.unit_support_point(i)),
+                   base);
+          }
+    }
 
     // The faces with boundary id `id` of the cells `take` accepts.
     template <int dim, typename Predicate>
@@ -73,24 +140,81 @@ namespace dualcontact
                 cell->get_dof_indices(dof_indices);
                 if constexpr (dim == 3)
                   {
-                    // degree 1: the face's vertices in deal.II's order
-                    // (lexicographic on a quadrilateral), the DoFs of a
-                    // vertex one per component in the order of the
-                    // components; its outward normal from the first three
-                    const auto face_it = cell->face(f);
-                    for (const unsigned int v : face_it->vertex_indices())
+                    const auto         face_it = cell->face(f);
+                    const unsigned int k       = fe.degree;
+                    if (k == 1)
+                      // the face's vertices in deal.II's order
+                      // (lexicographic on a quadrilateral), the DoFs of a
+                      // vertex one per component in the order of the
+                      // components
+                      for (const unsigned int v : face_it->vertex_indices())
+                        {
+                          face.x.push_back(face_it->vertex(v));
+                          face.dofs.emplace_back();
+                          for (unsigned int c = 0; c < dim; ++c)
+                            face.dofs.back()[c] = face_it->vertex_dof_index(
+                              v, c, cell->active_fe_index());
+                        }
+                    else
                       {
-                        face.x.push_back(face_it->vertex(v));
-                        face.dofs.emplace_back();
-                        for (unsigned int c = 0; c < dim; ++c)
-                          face.dofs.back()[c] =
-                            face_it->vertex_dof_index(v,
-                                                      c,
-                                                      cell->active_fe_index());
-                        face.xi.push_back(0.);
+                        // FE_Q(k)'s support points on the quadrilateral, in
+                        // lexicographic order of their coordinates in the
+                        // bilinear map of its vertices (whatever the face's
+                        // orientation in the cell): node i + (k + 1) j at
+                        // the i-th Gauss-Lobatto point along xi and the
+                        // j-th along eta
+                        std::array<Point<3>, 4> v;
+                        for (unsigned int i = 0; i < 4; ++i)
+                          v[i] = face_it->vertex(i);
+                        const QGaussLobatto<1> rule(k + 1);
+                        std::vector<double>    lobatto;
+                        for (const Point<1> &p : rule.get_points())
+                          lobatto.push_back(p[0]);
+                        std::sort(lobatto.begin(), lobatto.end());
+                        const auto index = [&](const double t) {
+                          unsigned int best = 0;
+                          for (unsigned int i = 1; i <= k; ++i)
+                            if (std::abs(lobatto[i] - t) <
+                                std::abs(lobatto[best] - t))
+                              best = i;
+                          return best;
+                        };
+                        std::map<unsigned int,
+                                 std::pair<Point<dim>, unsigned int>>
+                          by_node;
+                        std::map<unsigned int,
+                                 std::array<types::global_dof_index, dim>>
+                          dofs_of;
+                        support_points_on_face<dim>(
+                          mapping,
+                          cell,
+                          f,
+                          dof_indices,
+                          dofs_of,
+                          [&](const Point<dim> &x, const unsigned int base) {
+                            const auto [xi, eta] = face_coordinates(v, x);
+                            by_node[index(xi) + (k + 1) * index(eta)] = {x,
+                                                                         base};
+                          });
+                        AssertThrow(by_node.size() == (k + 1) * (k + 1),
+                                    ExcMessage(
+                                      "The support points of a face of a "
+                                      "contact pair do not fall on their "
+                                      "lexicographic places."));
+                        for (const auto &[node, point] : by_node)
+                          {
+                            face.x.push_back(point.first);
+                            face.dofs.push_back(dofs_of[point.second]);
+                          }
                       }
-                    face.normal = cross_product_3d(face.x[1] - face.x[0],
-                                                   face.x[2] - face.x[0]);
+                    face.xi.assign(face.x.size(), 0.);
+                    // its normal from the vertices at (0, 0), (1, 0) and
+                    // (0, 1) of the reference face
+                    const bool         triangle = face.x.size() == 3;
+                    const unsigned int right    = triangle ? 1 : k;
+                    const unsigned int up       = triangle ? 2 : k * (k + 1);
+                    face.normal = cross_product_3d(face.x[right] - face.x[0],
+                                                   face.x[up] - face.x[0]);
                   }
                 else
                   {
@@ -115,21 +239,16 @@ namespace dualcontact
                               k, c, cell->active_fe_index());
                         }
                     else
-                      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                        if (fe.has_support_on_face(i, f))
-                          {
-                            const auto [component, base] =
-                              fe.system_to_component_index(i);
-                            dofs_of[base][component] = dof_indices[i];
-                            if (component == 0)
-                              {
-                                const Point<dim> x =
-                                  mapping.transform_unit_to_real_cell(
-                                    cell, fe.unit_support_point(i));
-                                by_xi[(x - v0) * chord / chord.norm_square()] =
-                                  {x, base};
-                              }
-                          }
+                      support_points_on_face<dim>(
+                        mapping,
+                        cell,
+                        f,
+                        dof_indices,
+                        dofs_of,
+                        [&](const Point<dim> &x, const unsigned int base) {
+                          by_xi[(x - v0) * chord / chord.norm_square()] = {
+                            x, base};
+                        });
                     for (const auto &[xi, point] : by_xi)
                       {
                         face.x.push_back(point.first);
@@ -162,10 +281,10 @@ namespace dualcontact
                     if (hanging.is_constrained(dofs[0]))
                       face.parents.back() =
                         *hanging.get_constraint_entries(dofs[0]);
-                    AssertThrow(face.parents.back().size() <= max_parents,
+                    AssertThrow(face.parents.back().size() <= max_parents(fe),
                                 ExcMessage("A hanging node of a contact pair's "
-                                           "surface hangs on more than four "
-                                           "nodes."));
+                                           "surface hangs on more nodes than "
+                                           "a face has."));
                   }
                 faces.push_back(face);
               }
@@ -237,7 +356,20 @@ namespace dualcontact
       for (const SurfaceFace<3> &face : faces)
         {
           mortar::Face m;
-          m.x = face.x;
+          if (face.x.size() == 3)
+            m.x = face.x;
+          else
+            {
+              // (k + 1)^2 nodes: the vertices are the lexicographic corners
+              const unsigned int k = static_cast<unsigned int>(
+                                       std::lround(std::sqrt(face.x.size()))) -
+                                     1;
+              m.degree = k;
+              m.x      = {face.x[0],
+                          face.x[k],
+                          face.x[k * (k + 1)],
+                          face.x[(k + 1) * (k + 1) - 1]};
+            }
           for (unsigned int k = 0; k < face.x.size(); ++k)
             m.node.push_back(node_number<3>(face, k, number, dofs, points));
           m.normal = face.normal;
@@ -309,11 +441,13 @@ namespace dualcontact
           }
     }
 
-    // every rank's faces on every rank (each face has `n` nodes)
+    // every rank's faces on every rank (each face has `n` nodes, each
+    // hanging on at most `max_parents`)
     template <int dim>
     std::vector<SurfaceFace<dim>>
     gather(const std::vector<SurfaceFace<dim>> &local,
            const unsigned int                   n,
+           const unsigned int                   max_parents,
            const MPI_Comm                       comm)
     {
       std::vector<double>                  reals;
@@ -396,19 +530,19 @@ namespace dualcontact
     if (!has_pairs_)
       return;
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    AssertThrow(dof_handler.get_fe().degree == 1 ||
-                  (dim == 2 && dof_handler.get_fe().reference_cell() ==
-                                 ReferenceCells::get_hypercube<dim>()),
-                ExcMessage("Contact pairs are built at degree 1, and in 2D "
-                           "at degree 2-3 on quadrilaterals."));
-    // the nodes of a face: in 2D the support points of FE_Q(k) on it, in
-    // 3D its vertices (a mesh has one kind of cell)
-    const unsigned int              n_face_nodes = dim == 2 ?
-                                                     dof_handler.get_fe().degree + 1 :
-                                                     dof_handler.get_fe()
-                                          .reference_cell()
-                                          .face_reference_cell(0)
-                                          .n_vertices();
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    AssertThrow(fe.degree == 1 ||
+                  fe.reference_cell() == ReferenceCells::get_hypercube<dim>(),
+                ExcMessage("Contact pairs are built at degree 1, and at "
+                           "degree 2-3 on quadrilaterals and hexahedra."));
+    // the nodes of a face: the support points of FE_Q(k) on it, k + 1 in
+    // 2D and (k + 1)^2 on a quadrilateral in 3D; a triangle's 3 vertices
+    // (a mesh has one kind of cell)
+    const unsigned int n_face_nodes =
+      dim == 2 ? fe.degree + 1 :
+      fe.reference_cell() == ReferenceCells::get_hypercube<dim>() ?
+                 (fe.degree + 1) * (fe.degree + 1) :
+                 3;
     const std::vector<unsigned int> body_of_coarse_cell =
       bodies_of_coarse_cells(dof_handler.get_triangulation());
     const bool node_to_segment = scene.pairs_node_to_segment();
@@ -433,6 +567,7 @@ namespace dualcontact
                                  return cell->is_locally_owned();
                                }),
                  n_face_nodes,
+                 max_parents(fe),
                  comm);
         const auto slave_faces = surface_faces(mapping,
                                                dof_handler,
@@ -553,6 +688,14 @@ namespace dualcontact
             ++covered;
             ContactNode<dim> &node = nodes[s];
             node.pair_slave_id     = slave_id;
+            // A node whose support the master covers in part transmits its
+            // multiplier over the covered part only: its weight is
+            // int_covered psi_s = sum_j M_sj, not m_s, so that l1 stays the
+            // pressure there (the contact patch test with the slave beyond
+            // the master's end, doc/two_bodies.md).
+            const double coverage = sum_m / coupling.weight[i];
+            if (std::abs(coverage - 1.) > 1e-12)
+              node.weight *= coverage;
             Point<dim>                     facing;
             Tensor<1, dim>                 master_normal;
             std::map<unsigned int, double> condensed;

@@ -606,7 +606,7 @@ namespace dualcontact
                          &free_motions,
                          previous_size,
                          same_stiffness};
-    system.weakly_held = &weakly_held;
+    system.anchored_at_start = &anchored_at_start;
     return system;
   }
 

@@ -172,7 +172,11 @@ namespace dualcontact
     };
     Vector<double>     h_values;
     FullMatrix<double> h_vectors;
-    // the free combinations, and whether something holds them weakly
+    // the free combinations, and whether they keep the start's value:
+    // those that something holds weakly, and between bodies all (a body's
+    // motion relative to another, which the first Newton solve leaves as
+    // inexact as its tolerance, would stay there)
+    const bool                                   several_bodies = n_bodies > 1;
     std::vector<std::pair<Vector<double>, bool>> free_combinations;
     all_eigen(moved, h_values, h_vectors);
     std::vector<Vector<double>> whitened;
@@ -182,7 +186,7 @@ namespace dualcontact
         for (unsigned int i = 0; i < n; ++i)
           c[i] = h_vectors(i, k);
         if (h_values[k] <= 1e-10 * measure)
-          free_combinations.emplace_back(c, false);
+          free_combinations.emplace_back(c, several_bodies);
         else
           {
             c /= std::sqrt(h_values[k]);
@@ -211,7 +215,8 @@ namespace dualcontact
             Vector<double> c(n);
             for (unsigned int k = 0; k < r; ++k)
               c.add(vectors(k, e), whitened[k]);
-            free_combinations.emplace_back(c, values[e] > 1e-10);
+            free_combinations.emplace_back(c,
+                                           several_bodies || values[e] > 1e-10);
           }
       }
 
@@ -225,9 +230,9 @@ namespace dualcontact
     // rotation plus a small deformation near those nodes, which K^-1
     // brings out (a translation is kept exactly: K w = chi M w).
     free_motions.clear();
-    weakly_held.clear();
+    anchored_at_start.clear();
     std::unique_ptr<ElasticSolver<dim>> solver;
-    for (const auto &[c, weakly] : free_combinations)
+    for (const auto &[c, at_start] : free_combinations)
       {
         TrilinosWrappers::MPI::Vector w(locally_owned_dofs, mpi_communicator);
         double                        rotation = 0.;
@@ -266,7 +271,7 @@ namespace dualcontact
           {
             w /= norm;
             free_motions.push_back(std::move(w));
-            weakly_held.push_back(weakly);
+            anchored_at_start.push_back(at_start);
           }
       }
   }

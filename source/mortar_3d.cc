@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <utility>
 
 namespace dualcontact
@@ -58,36 +59,39 @@ namespace dualcontact
        * product formulas; the collapsed coordinates of M. G. Duffy, SIAM J.
        * Numer. Anal. 19 (1982)): the square [0, 1]^2 mapped onto the
        * triangle by (u, v) -> barycentric (1 - u, u (1 - v), u v), of
-       * Jacobian u, with the 6-point Gauss rule in each direction: 36
-       * points, exact for degree 10 (degree p + 1 in u, p in v). It serves
-       * the pairs whose integrand is not a polynomial (a face that is not a
-       * triangle or a parallelogram): there the error of the 7-point rule
-       * falls only as the sixth power of the sub-triangles' size (5e-7 in
-       * the coverage for inner vertices moved by up to 0.2 of a cell), this
-       * one's falls exponentially with the number of points (3e-13 there,
-       * round-off with 10 x 10 points), for five times the 7-point rule's
-       * cost.
+       * Jacobian u, with the n-point Gauss rule in each direction: n^2
+       * points, exact for degree 2 n - 2 (degree p + 1 in u, p in v). It
+       * serves the traces of degree k > 1, whose integrand psi_s phi_j has
+       * degree 2 (k_s + k_m) on two affine faces, and the pairs whose
+       * integrand is not a polynomial (a face that is not a triangle or a
+       * parallelogram): there the error of the 7-point rule falls only as
+       * the sixth power of the sub-triangles' size (5e-7 in the coverage for
+       * inner vertices of Q1 faces moved by up to 0.2 of a cell), this one's
+       * falls exponentially with the number of points (3e-13 there with
+       * n = 6, round-off with n = 10).
        */
       const std::vector<TrianglePoint> &
-      conical_rule()
+      conical_rule(const unsigned int n)
       {
-        static const std::vector<TrianglePoint> rule = [] {
-          const QGauss<1>            gauss(6);
-          std::vector<TrianglePoint> points;
-          for (unsigned int i = 0; i < gauss.size(); ++i)
-            for (unsigned int j = 0; j < gauss.size(); ++j)
-              {
-                const double u = gauss.point(i)[0], v = gauss.point(j)[0];
-                points.push_back({{1. - u, u * (1. - v), u * v},
-                                  2. * u * gauss.weight(i) * gauss.weight(j)});
-              }
-          return points;
-        }();
-        return rule;
+        static std::map<unsigned int, std::vector<TrianglePoint>> rules;
+        std::vector<TrianglePoint> &points = rules[n];
+        if (points.empty())
+          {
+            const QGauss<1> gauss(n);
+            for (unsigned int i = 0; i < gauss.size(); ++i)
+              for (unsigned int j = 0; j < gauss.size(); ++j)
+                {
+                  const double u = gauss.point(i)[0], v = gauss.point(j)[0];
+                  points.push_back(
+                    {{1. - u, u * (1. - v), u * v},
+                     2. * u * gauss.weight(i) * gauss.weight(j)});
+                }
+          }
+        return points;
       }
 
       /**
-       * The values of a face's trace functions at the parametric point
+       * The values of the functions of a face's map at the parametric point
        * (xi, eta): on a triangle 1 - xi - eta, xi, eta; on a quadrilateral
        * the bilinear functions in lexicographic order.
        */
@@ -110,6 +114,76 @@ namespace dualcontact
             phi[2] = (1. - xi) * eta;
             phi[3] = xi * eta;
           }
+      }
+
+      /**
+       * The Gauss-Lobatto points of [0, 1] for the degree k, the support
+       * points of FE_Q(k) along a line.
+       */
+      const std::vector<double> &
+      lobatto_points(const unsigned int k)
+      {
+        static std::map<unsigned int, std::vector<double>> points;
+        std::vector<double>                               &x = points[k];
+        if (x.empty())
+          {
+            const QGaussLobatto<1> rule(k + 1);
+            for (unsigned int i = 0; i <= k; ++i)
+              x.push_back(rule.point(i)[0]);
+            std::sort(x.begin(), x.end());
+          }
+        return x;
+      }
+
+      /**
+       * The values of a face's trace functions at (xi, eta), in the order of
+       * its nodes: on a triangle the linear ones, on a quadrilateral the
+       * products l_i(xi) l_j(eta) of the Lagrange polynomials of degree k
+       * through the Gauss-Lobatto points, node i + (k + 1) j.
+       */
+      void
+      trace_values(const Face  &face,
+                   const double xi,
+                   const double eta,
+                   double      *phi)
+      {
+        const unsigned int k = face.degree;
+        if (face.x.size() == 3 || k == 1)
+          {
+            shape_values(face.x.size(), xi, eta, phi);
+            return;
+          }
+        const std::vector<double> &p = lobatto_points(k);
+        double                     a[4], b[4];
+        for (unsigned int i = 0; i <= k; ++i)
+          {
+            a[i] = b[i] = 1.;
+            for (unsigned int l = 0; l <= k; ++l)
+              if (l != i)
+                {
+                  a[i] *= (xi - p[l]) / (p[i] - p[l]);
+                  b[i] *= (eta - p[l]) / (p[i] - p[l]);
+                }
+          }
+        for (unsigned int j = 0; j <= k; ++j)
+          for (unsigned int i = 0; i <= k; ++i)
+            phi[i + (k + 1) * j] = a[i] * b[j];
+      }
+
+      // the most nodes of a face: (k + 1)^2 at k = 3
+      constexpr unsigned int max_face_nodes = 16;
+
+      /**
+       * Whether a face's vertices and nodes fit its kind and degree (see
+       * Face).
+       */
+      bool
+      well_formed(const Face &face)
+      {
+        if (face.x.size() == 3)
+          return face.degree == 1 && face.node.size() == 3;
+        return face.x.size() == 4 && face.degree >= 1 && face.degree <= 3 &&
+               face.node.size() == (face.degree + 1) * (face.degree + 1);
       }
 
       /**
@@ -435,22 +509,23 @@ namespace dualcontact
                  std::vector<std::vector<double>> &a,
                  std::vector<double>              &lumped)
       {
-        const unsigned int n = face.x.size();
+        const unsigned int n = face.node.size();
         FullMatrix<double> mass(n, n);
         lumped.assign(n, 0.);
         // the integration points of the reference face and their weights:
         // the 7-point rule on a triangle (the Jacobian is constant, the
-        // integrand phi_k phi_l of degree 2), the 4 x 4 Gauss rule on a square
-        // (on a flat quadrilateral |x_xi x x_eta| is affine in (xi, eta) and
-        // phi_k phi_l |x_xi x x_eta| of degree 3 in each variable; on a curved
-        // one an approximation)
+        // integrand phi_k phi_l of degree 2), the Gauss rule of max(4, k + 2)
+        // points in each direction on a square (on a flat quadrilateral
+        // |x_xi x x_eta| is affine in (xi, eta) and phi_k phi_l |x_xi x x_eta|
+        // of degree 2 k + 1 in each variable; on a curved one an
+        // approximation)
         std::vector<std::array<double, 3>> points;
-        if (n == 3)
+        if (face.x.size() == 3)
           for (const TrianglePoint &p : triangle_rule())
             points.push_back({{p.lambda[1], p.lambda[2], 0.5 * p.weight}});
         else
           {
-            const QGauss<2> gauss(4);
+            const QGauss<2> gauss(std::max(4u, face.degree + 2));
             for (unsigned int q = 0; q < gauss.size(); ++q)
               points.push_back(
                 {{gauss.point(q)[0], gauss.point(q)[1], gauss.weight(q)}});
@@ -459,8 +534,8 @@ namespace dualcontact
           {
             const auto [t0, t1] = tangents(face.x, xi, eta);
             const double dA     = w * cross_product_3d(t0, t1).norm();
-            double       phi[4];
-            shape_values(n, xi, eta, phi);
+            double       phi[max_face_nodes];
+            trace_values(face, xi, eta, phi);
             for (unsigned int k = 0; k < n; ++k)
               {
                 lumped[k] += dA * phi[k];
@@ -505,10 +580,10 @@ namespace dualcontact
       master_boxes.reserve(master.size());
       for (const Face &m : master)
         {
-          AssertThrow((m.x.size() == 3 || m.x.size() == 4) &&
-                        m.node.size() == m.x.size(),
-                      ExcMessage("A master face has 3 or 4 vertices and as "
-                                 "many node numbers."));
+          AssertThrow(well_formed(m),
+                      ExcMessage("A master face is a triangle of degree 1 "
+                                 "or a quadrilateral of degree 1-3 with "
+                                 "(k + 1)^2 node numbers."));
           master_boxes.emplace_back(m.x);
         }
       const MasterGrid  grid(master_boxes);
@@ -522,16 +597,18 @@ namespace dualcontact
 
       for (unsigned int f = 0; f < slave.size(); ++f)
         {
-          const Face        &s  = slave[f];
-          const unsigned int ns = s.x.size();
-          AssertThrow((ns == 3 || ns == 4) && s.node.size() == ns,
-                      ExcMessage("A slave face has 3 or 4 vertices and as "
-                                 "many node numbers."));
+          const Face &s = slave[f];
+          AssertThrow(well_formed(s),
+                      ExcMessage("A slave face is a triangle of degree 1 or "
+                                 "a quadrilateral of degree 1-3 with "
+                                 "(k + 1)^2 node numbers."));
+          // its vertices and its nodes
+          const unsigned int ns = s.x.size(), ns_nodes = s.node.size();
           // the dual functions, and the weights int phi_k dA
           std::vector<std::vector<double>> a;
           std::vector<double>              lumped;
           dual_basis(s, a, lumped);
-          for (unsigned int k = 0; k < ns; ++k)
+          for (unsigned int k = 0; k < ns_nodes; ++k)
             coupling.weight[s.node[k]] += lumped[k];
           const bool slave_affine = affine(s);
           // the auxiliary plane: through the centre, normal to the face there
@@ -595,15 +672,19 @@ namespace dualcontact
                   continue;
 
                 // the triangles from the vertex centroid, each integrated
-                // by the 7-point rule, exact for two affine faces, or else
-                // by the 36-point one
+                // by a rule exact for two affine faces (psi_s phi_j of
+                // degree 2 (k_s + k_m)), or else by a finer one
+                const unsigned int                nm_nodes = m.node.size();
+                const unsigned int                degrees = s.degree + m.degree;
                 const std::vector<TrianglePoint> &rule =
-                  slave_affine && master_affine[g] ? triangle_rule() :
-                                                     conical_rule();
+                  !(slave_affine && master_affine[g]) ?
+                    conical_rule(std::max(6u, degrees + 4)) :
+                  degrees == 2 ? triangle_rule() :
+                                 conical_rule(degrees + 1);
                 Point<2> middle;
                 for (const Point<2> &p : overlap)
                   middle += (1. / overlap.size()) * p;
-                double local[4][4] = {};
+                std::vector<double> local(ns_nodes * nm_nodes, 0.);
                 for (unsigned int i = 0; i < overlap.size(); ++i)
                   {
                     const Point<2> &p = overlap[i];
@@ -624,22 +705,22 @@ namespace dualcontact
                         const Tensor<1, 3> normal = cross_product_3d(t0, t1);
                         const double       ratio =
                           normal.norm() / std::abs(normal * n0);
-                        double phi_s[4], phi_m[4];
-                        shape_values(ns, xi, eta, phi_s);
-                        shape_values(nm, zeta, theta, phi_m);
+                        double phi_s[max_face_nodes], phi_m[max_face_nodes];
+                        trace_values(s, xi, eta, phi_s);
+                        trace_values(m, zeta, theta, phi_m);
                         const double w = r.weight * area * ratio;
-                        for (unsigned int k = 0; k < ns; ++k)
-                          for (unsigned int l = 0; l < nm; ++l)
-                            local[k][l] += w * phi_s[k] * phi_m[l];
+                        for (unsigned int k = 0; k < ns_nodes; ++k)
+                          for (unsigned int l = 0; l < nm_nodes; ++l)
+                            local[k * nm_nodes + l] += w * phi_s[k] * phi_m[l];
                       }
                   }
                 // int psi_s phi_j = sum_k a_sk int phi_k phi_j
-                for (unsigned int i = 0; i < ns; ++i)
-                  for (unsigned int l = 0; l < nm; ++l)
+                for (unsigned int i = 0; i < ns_nodes; ++i)
+                  for (unsigned int l = 0; l < nm_nodes; ++l)
                     {
                       double v = 0.;
-                      for (unsigned int k = 0; k < ns; ++k)
-                        v += a[i][k] * local[k][l];
+                      for (unsigned int k = 0; k < ns_nodes; ++k)
+                        v += a[i][k] * local[k * nm_nodes + l];
                       entries[s.node[i]].emplace_back(m.node[l], v);
                     }
               }

@@ -469,8 +469,9 @@ namespace dualcontact
     /**
      * Two boxes [lower, cut_low] and [cut_high, upper] that touch on the cut
      * x_{dim-1} = cut, each subdivided on its own, in one coarse mesh whose
-     * vertices on the cut are not shared: two bodies. Boundary ids as the
-     * box's (2 d on the lower, 2 d + 1 on the upper side along x_d), and
+     * vertices on the cut are not shared: two bodies. Boundary ids as a
+     * box's (2 d on each block's lower, 2 d + 1 on its upper side along
+     * x_d), and
      * on the cut 2 dim for the lower block's top and 2 dim + 1 for the upper
      * block's bottom; material id 0 for the lower and 1 for the upper block.
      */
@@ -504,14 +505,18 @@ namespace dualcontact
           if (face->at_boundary())
             {
               const Point<dim> x = face->center();
+              // the corners of the face's block
+              const bool        lower_block = cell->material_id() == 0;
+              const Point<dim> &a           = lower_block ? lower : cut_high;
+              const Point<dim> &b           = lower_block ? cut_low : upper;
               for (unsigned int d = 0; d < dim; ++d)
                 {
-                  const double tolerance = 1e-10 * (upper[d] - lower[d]);
+                  const double tolerance = 1e-10 * (b[d] - a[d]);
                   if (d == dim - 1 && std::abs(x[d] - cut) < tolerance)
                     face->set_boundary_id(2 * dim + cell->material_id());
-                  else if (std::abs(x[d] - lower[d]) < tolerance)
+                  else if (std::abs(x[d] - a[d]) < tolerance)
                     face->set_boundary_id(2 * d);
-                  else if (std::abs(x[d] - upper[d]) < tolerance)
+                  else if (std::abs(x[d] - b[d]) < tolerance)
                     face->set_boundary_id(2 * d + 1);
                 }
             }
@@ -873,10 +878,16 @@ namespace dualcontact
       {
         const Point<dim> lower = to_point<dim>(g.lower_left);
         const Point<dim> upper = to_point<dim>(g.upper_right);
-        Point<dim>       cut_low(upper), cut_high(lower);
+        Point<dim>       cut_low(upper), cut_high(lower), top(upper);
         const double     cut = 0.5 * (lower[dim - 1] + upper[dim - 1]);
         cut_low[dim - 1]     = cut;
         cut_high[dim - 1]    = cut;
+        // the upper block reaches beyond the lower one across the cut
+        for (unsigned int d = 0; d + 1 < dim; ++d)
+          {
+            cut_high[d] -= g.upper_overhang;
+            top[d] += g.upper_overhang;
+          }
         if (before_refining)
           {
             double n_lower = simplex ? (dim == 2 ? 2. : 5.) : 1.;
@@ -899,7 +910,7 @@ namespace dualcontact
                         lower,
                         cut_low,
                         cut_high,
-                        upper,
+                        top,
                         simplex);
         triangulation.copy_triangulation(serial);
       }

@@ -390,16 +390,18 @@ namespace dualcontact
       {
         Timer timer(v.get_mpi_communicator(), true);
         v_previous = v;
-        // The free motions that something holds weakly keep the start's
-        // value: along them the proximal term pulls toward v_start, not
-        // toward the last v. The force along them that the same weak hold
-        // leaves (between two bodies, the normals' discretisation error)
-        // then moves them once by F / chi, not by F / chi in every step
-        // (doc/theory.md §6). Along the motions held by nothing at all no
-        // force acts, and the last v is the anchor.
-        if (system.free_motions != nullptr && system.weakly_held != nullptr)
+        // Some free motions keep the start's value: along them the
+        // proximal term pulls toward v_start, not toward the last v. The
+        // force along them that a weak hold leaves (between two bodies, the
+        // normals' discretisation error) then moves them once by F / chi,
+        // not by F / chi in every step; and a body's motion relative to
+        // another is not left where the first, inexact Newton solve put it
+        // (doc/theory.md §6). Against the obstacle alone, along the motions
+        // held by nothing at all, the last v is the anchor.
+        if (system.free_motions != nullptr &&
+            system.anchored_at_start != nullptr)
           for (unsigned int i = 0; i < system.free_motions->size(); ++i)
-            if ((*system.weakly_held)[i])
+            if ((*system.anchored_at_start)[i])
               {
                 const TrilinosWrappers::MPI::Vector &w =
                   (*system.free_motions)[i];

@@ -415,9 +415,10 @@ namespace dualcontact
     std::array<double, 3> applied_load{};
     double                held_by_friction_pressure = 0.;
     // the rigid motions that nothing holds (ContactSystem::free_motions),
-    // and which of them something holds weakly (ContactSystem::weakly_held)
+    // and which of them keep the start's value
+    // (ContactSystem::anchored_at_start)
     std::vector<TrilinosWrappers::MPI::Vector> free_motions;
-    std::vector<bool>                          weakly_held;
+    std::vector<bool>                          anchored_at_start;
     NewtonSolver<dim>                          newton;
     UzawaIteration<dim>                        uzawa;
     ThresholdIteration<dim>                    threshold_iteration;

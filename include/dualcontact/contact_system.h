@@ -73,11 +73,12 @@ namespace dualcontact
     // load path on the same mesh): the Newton iteration may start with the
     // preconditioner it built then.
     bool same_stiffness = false;
-    // Which of the free motions something holds, however weakly (between
-    // two bodies, the normals' discretisation error): along them the
-    // proximal term pulls toward the start of the solve (doc/theory.md §6).
-    // Null: none.
-    const std::vector<bool> *weakly_held = nullptr;
+    // Which of the free motions keep the start's value: along them the
+    // proximal term pulls toward the start of the solve, not toward the
+    // last v (doc/theory.md §6). Those that something holds, however weakly
+    // (between two bodies, the normals' discretisation error), and in a
+    // scene of several bodies all. Null: none.
+    const std::vector<bool> *anchored_at_start = nullptr;
 
     /** The proximal weight of the step [stress/length^2]. */
     double

@@ -149,12 +149,13 @@ namespace dualcontact
     std::vector<double>       upper_right;
     std::vector<unsigned int> subdivisions;
     std::vector<unsigned int> upper_subdivisions; // two blocks: the upper's
-    std::vector<double>       center;
-    double                    radius                  = 1.;
-    double                    lower_radius            = 1.; // two half discs
-    unsigned int              pre_refinement_steps    = 0;
-    double                    pre_refinement_distance = 0.;
-    double                    pre_refinement_grading  = 1.;
+    double upper_overhang = 0.; // two blocks: the upper's reach beyond
+    std::vector<double> center;
+    double              radius                  = 1.;
+    double              lower_radius            = 1.; // two half discs
+    unsigned int        pre_refinement_steps    = 0;
+    double              pre_refinement_distance = 0.;
+    double              pre_refinement_grading  = 1.;
     // Type 'mesh file': the file as the input gave it, and the path it was
     // resolved to (relative to the folder of the .prm file that set it;
     // Parameters::read_file resolves it)

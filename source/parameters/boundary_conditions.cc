@@ -137,12 +137,14 @@ namespace dualcontact
       "faces with the slave id carry the contact nodes and multipliers, the "
       "faces with the master id are the other body's surface they may touch "
       "(dual mortar, small sliding, paired in the reference configuration). "
-      "Both ids keep the condition 'free' in 'Conditions', lie on different "
+      "Both ids keep the condition 'free' in 'Conditions' (or 'traction': a "
+      "load on the faces the other body does not hold, such as a part of "
+      "the slave beyond the master's end), lie on different "
       "bodies (parts of the mesh that share no vertex), and an id belongs to "
       "one pair only. The friction law of subsection Friction holds on every "
-      "pair as on the obstacle's 'contact' ids. In 2D at degree 1-3 "
-      "(quadrilaterals) or 1 (triangles), in 3D at degree 1 (hexahedra, "
-      "tetrahedra).");
+      "pair as on the obstacle's 'contact' ids. At degree 1-3 on "
+      "quadrilaterals and hexahedra, at degree 1 on triangles and "
+      "tetrahedra.");
     declarer.declare_entry(
       "Pair coupling",
       "dual mortar",
@@ -200,16 +202,11 @@ namespace dualcontact
                            std::to_string(n_ids - 1) + ").",
                          exit_inconsistent);
 
-    // the mortar segments: intervals in 2D, where at degree 2-3 the nodes
-    // of a face are FE_Q(k)'s support points on it (quadrilaterals), and
-    // the node-to-segment comparison takes the vertices alone (degree 1);
-    // polygons of faces with linear or bilinear traces in 3D (degree 1)
+    // the mortar segments: intervals in 2D, polygons in 3D, where at
+    // degree 2-3 the nodes of a face are FE_Q(k)'s support points on it
+    // (quadrilaterals, hexahedra), and the node-to-segment comparison takes
+    // the vertices alone (2D, degree 1)
     const unsigned int degree = parameters.discretization.degree;
-    if (!contact_pairs.empty() && dim == 3 && degree > 1)
-      throw InputError("The entry <Boundary conditions/Contact pairs> couples "
-                       "two bodies in 3D at degree 1 only: set "
-                       "<Discretization/Polynomial degree> to 1.",
-                       exit_inconsistent);
     if (!contact_pairs.empty() && dim == 3 && node_to_segment)
       throw InputError("The entry <Boundary conditions/Pair coupling> = node "
                        "to segment is a comparison in 2D: set it to dual "
@@ -218,7 +215,7 @@ namespace dualcontact
     if (!contact_pairs.empty() && degree > 1 &&
         geometry.cell_kind == CellKind::simplex)
       throw InputError("The entry <Boundary conditions/Contact pairs> couples "
-                       "two bodies of triangles at degree 1 only: set "
+                       "two bodies of simplices at degree 1 only: set "
                        "<Discretization/Polynomial degree> to 1, or <Geometry/"
                        "Cell type> to quadrilateral.",
                        exit_inconsistent);
@@ -229,7 +226,7 @@ namespace dualcontact
                        "coupling to dual mortar.",
                        exit_inconsistent);
     // a pair: two different ids of the geometry, both free (the pair is
-    // their condition), each in one pair only
+    // their condition) or loaded by a traction, each in one pair only
     std::map<boundary_id, unsigned int> in_pairs;
     for (const auto &[slave, master] : contact_pairs)
       {
@@ -249,13 +246,15 @@ namespace dualcontact
                                  " (its ids are 0 to " +
                                  std::to_string(n_ids - 1) + ").",
                                exit_inconsistent);
-            if (condition(id) != BoundaryCondition::free)
+            if (condition(id) != BoundaryCondition::free &&
+                condition(id) != BoundaryCondition::traction)
               throw InputError(pair +
                                  ", but <Boundary conditions/"
                                  "Conditions> gives id " +
                                  std::to_string(id) + " the condition '" +
                                  to_string(condition(id)) +
-                                 "': a pair's ids are free there.",
+                                 "': a pair's ids are free there, or "
+                                 "loaded by a traction.",
                                exit_inconsistent);
             if (++in_pairs[id] > 1)
               throw InputError("The entry <Boundary conditions/Contact "

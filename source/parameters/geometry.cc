@@ -266,6 +266,15 @@ namespace dualcontact
       "direction [-] (3D default: 1, 1, 1); across the cut they need not "
       "match the lower block's.");
     declarer.declare_entry(
+      "Upper overhang",
+      "0",
+      EntryPattern::number(0.),
+      "Two blocks: how far the upper block reaches beyond the lower one on "
+      "each side across the cut (along x, and y in 3D) [length]. 0: both "
+      "blocks span the box. The upper block's bottom beyond the lower one "
+      "keeps the bottom's id (5 in 2D, 7 in 3D): a slave surface that "
+      "extends beyond its master.");
+    declarer.declare_entry(
       "Center",
       "0, 0",
       EntryPattern::list(EntryPattern::number(), 2, 3),
@@ -329,6 +338,7 @@ namespace dualcontact
     for (const int n : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Upper subdivisions"), ',')))
       upper_subdivisions.push_back(n);
+    upper_overhang          = prm.get_double("Upper overhang");
     center                  = parse_doubles(prm.get("Center"));
     radius                  = prm.get_double("Radius");
     lower_radius            = prm.get_double("Lower radius");
@@ -553,6 +563,13 @@ namespace dualcontact
           "the contact nodes at the vertices would get no weight m_s "
           "(doc/simplices.md). Use degree 1 on tetrahedra, or hexahedra.",
         exit_inconsistent);
+    if (degree > 1 && !parameters.boundary.contact_pairs.empty())
+      throw InputError("The mesh is made of " + simplices + " (" + why +
+                         "): contact pairs couple two bodies of simplices at "
+                         "degree 1 only: set <Discretization/Polynomial "
+                         "degree> to 1, or mesh with " +
+                         (dim == 2 ? "quadrilaterals." : "hexahedra."),
+                       exit_inconsistent);
     const RefinementParameters &refinement = parameters.refinement;
     const bool                  adapts =
       refinement.n_cycles > 1 || (parameters.load_path.adapt_at_every_step &&
@@ -596,7 +613,7 @@ namespace dualcontact
                " (it is for the rectangle)"},
             {type != GeometryType::two_blocks,
              "Geometry",
-             {"Upper subdivisions"},
+             {"Upper subdivisions", "Upper overhang"},
              "<Geometry/Type> is " + quoted(to_string(type)) +
                " (it is for 'two blocks')"},
             {type != GeometryType::two_half_discs,

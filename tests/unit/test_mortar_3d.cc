@@ -9,6 +9,8 @@
 // quadrilateral that is not a parallelogram is still biorthogonal; and
 // between a ball and a spherical socket the coverage is near one.
 
+#include <deal.II/base/quadrature_lib.h>
+
 #include <dualcontact/mortar_3d.h>
 
 #include <catch2/catch.hpp>
@@ -539,4 +541,149 @@ TEST_CASE("Dual mortar in 3D between a ball and a spherical socket covers "
   // integral's change of variables into the plane, to the rule's error on
   // the curved faces (2e-15 here)
   CHECK(worst <= 1e-12);
+}
+
+namespace
+{
+  /**
+   * An n x n grid of the square [lo, hi]^2 at height z with the normal
+   * (0, 0, normal_z) and the trace of FE_Q(k) on each face: node (a, b) of
+   * the (n k + 1)^2 lattice at the Gauss-Lobatto points of each cell is
+   * number b (n k + 1) + a, and a face lists its (k + 1)^2 nodes in
+   * lexicographic order.
+   */
+  Surface
+  grid_of_degree(const double       lo,
+                 const double       hi,
+                 const double       z,
+                 const unsigned int n,
+                 const double       normal_z,
+                 const unsigned int k)
+  {
+    const QGaussLobatto<1> rule(k + 1);
+    std::vector<double>    p;
+    for (const Point<1> &q : rule.get_points())
+      p.push_back(q[0]);
+    std::sort(p.begin(), p.end());
+    const double       h = (hi - lo) / n;
+    const unsigned int m = n * k + 1;
+    // the lattice coordinate of index a
+    const auto at = [&](const unsigned int a) {
+      return lo + h * (a / k) + h * p[a % k];
+    };
+    Surface s;
+    for (unsigned int b = 0; b < m; ++b)
+      for (unsigned int a = 0; a < m; ++a)
+        s.nodes.emplace_back(a + 1 == m ? hi : at(a),
+                             b + 1 == m ? hi : at(b),
+                             z);
+    for (unsigned int j = 0; j < n; ++j)
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          mortar::Face f;
+          f.degree    = k;
+          f.normal[2] = normal_z;
+          for (unsigned int b = 0; b <= k; ++b)
+            for (unsigned int a = 0; a <= k; ++a)
+              f.node.push_back((j * k + b) * m + i * k + a);
+          for (const unsigned int corner :
+               {0u, k, k * (k + 1), (k + 1) * (k + 1) - 1})
+            f.x.push_back(s.nodes[f.node[corner]]);
+          s.faces.push_back(f);
+        }
+    return s;
+  }
+} // namespace
+
+TEST_CASE("Dual mortar in 3D at degrees 2 and 3 (FE_Q(k) on the faces), "
+          "5 x 5 over 7 x 7 quadrilaterals: positive weights, the dual "
+          "basis biorthogonal, the patch test at the interface, and "
+          "polynomials of degree k reproduced",
+          "[functions][mortar]")
+{
+  for (const unsigned int k : {2u, 3u})
+    {
+      INFO("degree " << k);
+      const Surface slave  = grid_of_degree(0., 1., 0., 5, -1., k);
+      const Surface master = grid_of_degree(-0.1, 1.1, 0., 7, 1., k);
+      // biorthogonality on one face: int psi_s phi_t = delta_st m_s, from
+      // the coupling of the face with itself (the master the same face)
+      {
+        mortar::Face self = slave.faces[7];
+        mortar::Face other(self);
+        other.normal *= -1.;
+        std::vector<unsigned int> numbers(self.node.size());
+        for (unsigned int i = 0; i < numbers.size(); ++i)
+          self.node[i] = other.node[i] = numbers[i] = i;
+        const auto c     = mortar::couple({self}, numbers.size(), {other});
+        double     worst = 0.;
+        for (unsigned int s = 0; s < numbers.size(); ++s)
+          {
+            CHECK(c.weight[s] > 0.);
+            for (const auto &[t, m] : c.master[s])
+              worst = std::max(worst,
+                               std::abs(m - (t == s ? c.weight[s] : 0.)) /
+                                 c.weight[s]);
+          }
+        CHECK(worst <= 1e-12);
+      }
+      const auto c =
+        mortar::couple(slave.faces, slave.nodes.size(), master.faces);
+      // the weights int phi_s dA: a Gauss-Lobatto weight's product, over the
+      // faces at the node; they sum to the area
+      double total = 0.;
+      for (unsigned int s = 0; s < slave.nodes.size(); ++s)
+        {
+          CHECK(c.weight[s] > 0.);
+          total += c.weight[s];
+        }
+      CHECK(total == Approx(1.).epsilon(1e-13));
+      // every slave node sees the master whole (the master covers the
+      // slave), and sum_j M_sj f(x_j) = m_s f(x_s) for f in Q_k, which both
+      // traces hold exactly
+      const auto f = [k](const Point<3> &x) {
+        return 1. + std::pow(x[0], k) - 2. * std::pow(x[1], k) +
+               x[0] * std::pow(x[1], k - 1) + 3. * std::pow(x[0] * x[1], k);
+      };
+      double coverage = 0., reproduction = 0.;
+      for (unsigned int s = 0; s < slave.nodes.size(); ++s)
+        {
+          double sum = 0.;
+          for (const auto &[j, m] : c.master[s])
+            sum += m * f(master.nodes[j]);
+          coverage = std::max(coverage, std::abs(c.coverage(s) - 1.));
+          reproduction =
+            std::max(reproduction,
+                     std::abs(sum / c.weight[s] - f(slave.nodes[s])));
+        }
+      INFO("coverage " << coverage << ", reproduction " << reproduction);
+      CHECK(coverage <= 1e-12);
+      CHECK(reproduction <= 1e-11);
+      // a uniform multiplier on the slave loads each master node under it
+      // by the load int phi_j dA over the slave's square: the patch test
+      // (the master nodes of the cells inside [0.1, 0.9]^2 lie under it
+      // whole; the master's cells are 1.2 / 7 wide)
+      const auto          reference = grid_of_degree(-0.1, 1.1, 0., 7, 1., k);
+      std::vector<double> force(master.nodes.size(), 0.), weight(force);
+      const auto          own =
+        mortar::couple(reference.faces,
+                       reference.nodes.size(),
+                       grid_of_degree(-0.1, 1.1, 0., 7, -1., k).faces);
+      for (unsigned int j = 0; j < master.nodes.size(); ++j)
+        weight[j] = own.weight[j];
+      for (unsigned int s = 0; s < slave.nodes.size(); ++s)
+        for (const auto &[j, m] : c.master[s])
+          force[j] += m;
+      double patch = 0.;
+      for (unsigned int j = 0; j < master.nodes.size(); ++j)
+        {
+          const Point<3> &x = master.nodes[j];
+          // the support of phi_j: the cells at x, one master cell around it
+          const double h = 1.2 / 7.;
+          if (x[0] - h > 0. && x[0] + h < 1. && x[1] - h > 0. && x[1] + h < 1.)
+            patch = std::max(patch, std::abs(force[j] - weight[j]) / weight[j]);
+        }
+      INFO("patch " << patch);
+      CHECK(patch <= 1e-12);
+    }
 }

@@ -132,8 +132,9 @@ TEST_CASE("The contact patch test between two bodies at degrees 2 and 3: "
 
 TEST_CASE("The contact patch test between two bodies in 3D on non-matching "
           "meshes (5 x 5 over 7 x 7 faces, then 10 x 10 over 14 x 14; "
-          "hexahedra and tetrahedra): the pressure p at every slave node and "
-          "the exact displacement, frictionless and all stick",
+          "hexahedra and tetrahedra at degree 1, hexahedra at degree 2 on the "
+          "first mesh): the pressure p at every slave node and the exact "
+          "displacement, frictionless and all stick",
           "[pairs]")
 {
   // prm/two_blocks_patch_3d.prm with the shear q = 0.2 along x under
@@ -149,15 +150,23 @@ TEST_CASE("The contact patch test between two bodies in 3D on non-matching "
     "  set Displacement = 0.2*2.6/1000*z; 0; -1.3*0.4/0.7/1000*z\nend\n"
     "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
   for (const bool friction : {false, true})
-    for (const std::string cells : {"quadrilateral", "simplex"})
+    for (const auto &[cells, degree] :
+         {std::pair<std::string, unsigned int>{"quadrilateral", 1},
+          {"simplex", 1},
+          {"quadrilateral", 2}})
       {
         INFO((friction ? "all stick under the shear 0.2" : "frictionless")
-             << " on " << cells << " cells");
-        const SceneRun<3> run("two_blocks_patch_3d.prm",
-                              (friction ? stick_3d : tight) +
-                                "subsection Geometry\n  set Cell type = " +
-                                cells + "\nend\n");
-        Tensor<1, 3>      q;
+             << " on " << cells << " cells of degree " << degree);
+        const SceneRun<3> run(
+          "two_blocks_patch_3d.prm",
+          (friction ? stick_3d : tight) +
+            "subsection Geometry\n  set Cell type = " + cells +
+            "\nend\nsubsection Discretization\n  set Polynomial degree = " +
+            std::to_string(degree) + "\nend\n" +
+            (degree == 2 ? "subsection Refinement\n  set Number of cycles = "
+                           "1\nend\n" :
+                           ""));
+        Tensor<1, 3> q;
         q[0]                = friction ? 0.2 : 0.;
         const auto [l1, l2] = deviation(run, 1., q);
         for (const CycleResult &r : run.problem->results())
@@ -165,8 +174,8 @@ TEST_CASE("The contact patch test between two bodies in 3D on non-matching "
             INFO("cycle " << r.mesh.cycle << ": error "
                           << r.errors.error_L2 / r.errors.norm_L2);
             // the upper block's 5 x 5 (10 x 10) faces: 6 x 6 (11 x 11) slave
-            // nodes, all facing the master
-            const unsigned int n = 5 * (1u << r.mesh.cycle) + 1;
+            // nodes at degree 1, 11 x 11 at degree 2, all facing the master
+            const unsigned int n = degree * 5 * (1u << r.mesh.cycle) + 1;
             CHECK(r.solve.n_contact_nodes == n * n);
             CHECK(r.solve.n_uncovered == 0);
             CHECK(r.solve.n_active == r.solve.n_contact_nodes);
@@ -188,6 +197,153 @@ TEST_CASE("The contact patch test between two bodies in 3D on non-matching "
         CHECK(l1 <= 1e-8);
         CHECK(l2 <= 1e-8);
       }
+}
+
+namespace
+{
+  // The contact patch test with the slave beyond the master's end: the upper
+  // block reaches one upper cell beyond the lower block on each side (2D:
+  // 9 cells over [-2/7, 16/7] on 10 over [0, 2]; 3D: 7 x 7 faces over
+  // [-0.4, 2.4]^2 on 7 x 7 over [0, 2]^2), so that the master's end lies on
+  // an edge of the slave mesh and the slave nodes there are covered on one
+  // side only. The uniform stress of the patch test holds in both blocks if
+  // the slave faces beyond the master carry the traction the master gives
+  // the others, sigma n = (-q, p) on the bottom (a load on the slave id where
+  // the master does not hold it); the sides of the upper block take the
+  // tractions of the lower one's. A node at the master's end transmits its
+  // multiplier over the covered half of its support (its weight there), and
+  // l1 = p at every contact node.
+  std::string
+  overhang(const unsigned int dim, const bool friction)
+  {
+    const std::string beyond =
+      dim == 2 ? "x < 0 || x > 2" : "x < 0 || x > 2 || y < 0 || y > 2";
+    const std::string shear = friction ? "-0.2" : "0";
+    const std::string load  = "if(" + beyond + ", " + shear + ", 0); " +
+                             (dim == 3 ? "0; " : "") + "if(" + beyond +
+                             ", 1, 0)";
+    return "subsection Geometry\n  set Upper overhang = " +
+           std::string(dim == 2 ? "0.2857142857142857" : "0.4") +
+           "\n  set Upper subdivisions = " + (dim == 2 ? "9, 3" : "7, 7, 2") +
+           "\nend\n"
+           "subsection Boundary conditions\n  set Conditions = " +
+           (dim == 2 ? "0: traction, 1: traction, 2: fixed, 3: traction, "
+                       "5: traction" :
+                       "0: traction, 1: traction, 2: traction, 3: traction, "
+                       "4: fixed, 5: traction, 7: traction") +
+           "\n  set Tractions = " +
+           (dim == 2 ? (friction ? "0: 0.3/0.7; -0.2, 1: -0.3/0.7; 0.2, "
+                                   "3: 0.2; -1, 5: " :
+                                   "0: 0.3/0.7; 0, 1: -0.3/0.7; 0, 3: 0; -1, "
+                                   "5: ") :
+                       (friction ? "0: 0.3/0.7; 0; -0.2, 1: -0.3/0.7; 0; 0.2, "
+                                   "2: 0; 0.3/0.7; 0, 3: 0; -0.3/0.7; 0, "
+                                   "5: 0.2; 0; -1, 7: " :
+                                   "0: 0.3/0.7; 0; 0, 1: -0.3/0.7; 0; 0, "
+                                   "2: 0; 0.3/0.7; 0, 3: 0; -0.3/0.7; 0, "
+                                   "5: 0; 0; -1, 7: ")) +
+           load + "\nend\n" +
+           (friction ?
+              "subsection Friction\n  set Law = coulomb\n"
+              "  set Coefficient = 0.4\nend\n"
+              "subsection Exact solution\n  set Displacement = "
+              "0.2*2.6/1000*" +
+                std::string(dim == 2 ? "y; " : "z; 0; ") +
+                "-1.3*0.4/0.7/1000*" + (dim == 2 ? "y" : "z") + "\nend\n" :
+              "") +
+           "subsection Exact solution\n  set Contact pressure = if(" + beyond +
+           ", 0, 1)\nend\n"
+           "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
+  }
+} // namespace
+
+TEST_CASE("The contact patch test with the slave extending beyond the "
+          "master (2D: 7 covered cells of 9 over 10, degrees 1 and 2, "
+          "quadrilaterals and triangles; 3D: 5 x 5 covered faces of 7 x 7 "
+          "over 7 x 7, hexahedra and tetrahedra at degree 1, hexahedra at "
+          "degree 2): the pressure p at every contact node, the exact "
+          "displacement, frictionless and all stick",
+          "[pairs]")
+{
+  for (const bool friction : {false, true})
+    {
+      for (const auto &[cells, degree] :
+           {std::pair<std::string, unsigned int>{"quadrilateral", 1},
+            {"simplex", 1},
+            {"quadrilateral", 2}})
+        {
+          INFO("2D, " << (friction ? "all stick" : "frictionless") << ", "
+                      << cells << " cells of degree " << degree);
+          const Run    run("two_blocks_patch.prm",
+                        overhang(2, friction) +
+                          "subsection Geometry\n  set Cell type = " + cells +
+                          "\nend\nsubsection Discretization\n  set "
+                             "Polynomial degree = " +
+                          std::to_string(degree) + "\nend\n");
+          Tensor<1, 2> q;
+          q[0]                = friction ? 0.2 : 0.;
+          const auto [l1, l2] = deviation(run, 1., q);
+          for (const CycleResult &r : run.problem->results())
+            {
+              const unsigned int cells_across = 1u << r.mesh.cycle;
+              INFO("cycle " << r.mesh.cycle << ": error "
+                            << r.errors.error_L2 / r.errors.norm_L2);
+              // the 7 (14) covered cells' nodes are contact nodes, those of
+              // the 2 (4) beyond the master are not
+              CHECK(r.solve.n_contact_nodes == degree * 7 * cells_across + 1);
+              CHECK(r.solve.n_uncovered == degree * 2 * cells_across);
+              CHECK(r.solve.n_active == r.solve.n_contact_nodes);
+              CHECK(r.errors.error_L2 <= 1e-8 * r.errors.norm_L2);
+              CHECK(r.zone.contact_force == Approx(2.).epsilon(1e-10));
+              CHECK(r.zone.on_master_body[1] == Approx(-2.).epsilon(1e-10));
+              for (unsigned int c = 0; c < 2; ++c)
+                CHECK(std::abs(r.zone.on_slave_body[c] +
+                               r.zone.on_master_body[c]) <= 1e-10 * 2.);
+              if (friction)
+                CHECK(r.solve.n_stick == r.solve.n_contact_nodes);
+            }
+          INFO("largest |l1 - p| " << l1 << ", |l2 - q| " << l2);
+          CHECK(l1 <= 1e-8);
+          CHECK(l2 <= 1e-8);
+        }
+      for (const auto &[cells, degree] :
+           {std::pair<std::string, unsigned int>{"quadrilateral", 1},
+            {"simplex", 1},
+            {"quadrilateral", 2}})
+        {
+          INFO("3D, " << (friction ? "all stick" : "frictionless") << ", "
+                      << cells << " cells of degree " << degree);
+          const SceneRun<3> run(
+            "two_blocks_patch_3d.prm",
+            overhang(3, friction) +
+              "subsection Geometry\n  set Cell type = " + cells +
+              "\nend\nsubsection Discretization\n  set Polynomial degree = " +
+              std::to_string(degree) +
+              "\nend\nsubsection Refinement\n  set Number of cycles = 1\n"
+              "end\n");
+          Tensor<1, 3> q;
+          q[0]                 = friction ? 0.2 : 0.;
+          const auto [l1, l2]  = deviation(run, 1., q);
+          const CycleResult &r = run.last();
+          INFO("error " << r.errors.error_L2 / r.errors.norm_L2);
+          // the nodes of the 5 x 5 covered faces, and the ring beyond
+          const unsigned int n = 5 * degree + 1, all = 7 * degree + 1;
+          CHECK(r.solve.n_contact_nodes == n * n);
+          CHECK(r.solve.n_uncovered == all * all - n * n);
+          CHECK(r.solve.n_active == r.solve.n_contact_nodes);
+          CHECK(r.errors.error_L2 <= 1e-8 * r.errors.norm_L2);
+          CHECK(r.zone.contact_force == Approx(4.).epsilon(1e-10));
+          CHECK(r.zone.on_master_body[2] == Approx(-4.).epsilon(1e-10));
+          for (unsigned int c = 0; c < 3; ++c)
+            CHECK(std::abs(r.zone.on_slave_body[c] +
+                           r.zone.on_master_body[c]) <= 1e-10 * 4.);
+          if (friction)
+            CHECK(r.solve.n_stick == r.solve.n_contact_nodes);
+          INFO("largest |l1 - p| " << l1 << ", |l2 - q| " << l2);
+          CHECK(l1 <= 1e-8);
+          CHECK(l2 <= 1e-8);
+        }
+    }
 }
 
 TEST_CASE("A body on a body on a rigid plane: the patch test through the "
@@ -289,11 +445,13 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
       CHECK(error.code == exit_inconsistent);
       CHECK(contains(error.message, words));
     }
-  // in 3D: degree 1 and the dual mortar only; the 3D overlap is measured
+  // in 3D: degree 1 on tetrahedra and the dual mortar only; the 3D overlap
+  // is measured
   // against the square root of the slave weight
   const std::vector<std::pair<std::string, std::string>> cases_3d = {
-    {"subsection Discretization\n  set Polynomial degree = 2\nend\n",
-     "couples two bodies in 3D at degree 1 only"},
+    {"subsection Discretization\n  set Polynomial degree = 2\nend\n"
+     "subsection Geometry\n  set Cell type = simplex\nend\n",
+     "couples two bodies of simplices at degree 1 only"},
     {"subsection Boundary conditions\n  set Pair coupling = node to "
      "segment\nend\n",
      "node to segment is a comparison in 2D"},
