@@ -135,20 +135,21 @@ namespace dualcontact
       }
 
     AssertThrow(false,
-                ExcMessage("The threshold iteration (loop 1) did not converge "
-                           "in " +
-                           std::to_string(parameters.max_steps) +
-                           " steps (<Friction/Maximum threshold steps>); the "
-                           "last relative change of g was " +
-                           format_number(total.change_g) + " (tolerance " +
-                           format_number(parameters.tolerance) +
-                           "). Likely causes, most likely first: (1) a large "
-                           "friction coefficient, for which Coulomb solutions "
-                           "need not be unique and the successive "
-                           "approximations need not contract: try a smaller "
-                           "F or <Friction/Strategy> = merged; (2) too few "
-                           "steps allowed: raise <Friction/Maximum threshold "
-                           "steps>."));
+                ExcMessage(
+                  "The threshold iteration (loop 1) did not converge "
+                  "in " +
+                  std::to_string(parameters.max_steps) +
+                  " steps (<Friction/Maximum threshold steps>); the "
+                  "last relative change of g was " +
+                  format_number(total.change_g) + " (tolerance " +
+                  format_number(parameters.tolerance) +
+                  "). Likely causes, most likely first: (1) a large "
+                  "friction coefficient, for which Coulomb solutions "
+                  "need not be unique and the successive "
+                  "approximations need not contract: try a smaller "
+                  "F or <Friction/Threshold iteration> = merged; (2) too "
+                  "few steps allowed: raise <Friction/Maximum threshold "
+                  "steps>."));
     return total;
   }
 

@@ -108,3 +108,26 @@ TEST_CASE("CG failing on a nearly incompressible material names the material "
         std::string::npos);
   CHECK(at(ordinary, "incompressible") == std::string::npos);
 }
+
+TEST_CASE("A threshold iteration that runs out of steps names loop 1, its "
+          "last change of g, and entries that exist",
+          "[robustness][messages]")
+{
+  const std::string message = failure("hertz_friction.prm",
+                                      "subsection Friction\n"
+                                      "  set Threshold iteration = nested\n"
+                                      "  set Maximum threshold steps = 1\n"
+                                      "end\n"
+                                      "subsection Refinement\n"
+                                      "  set Number of cycles = 1\n"
+                                      "end\n");
+  INFO(message);
+  CHECK(at(message,
+           "The threshold iteration (loop 1) did not converge in 1 "
+           "steps (<Friction/Maximum threshold steps>)") != std::string::npos);
+  CHECK(at(message, "last relative change of g was ") != std::string::npos);
+  // the other strategy by the name of its entry
+  CHECK(at(message, "<Friction/Threshold iteration> = merged") !=
+        std::string::npos);
+  CHECK(at(message, "<Friction/Strategy>") == std::string::npos);
+}
