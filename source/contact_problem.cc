@@ -184,9 +184,25 @@ namespace dualcontact
   ContactProblem<dim>::start_step(const unsigned int step, CycleResult &result)
   {
     // the state the step before reached: u^{n-1}, its size, and the
-    // obstacle there
+    // obstacle there. A size that the step before had next to none of (a
+    // step without load, after the body left the contact) keeps the value
+    // of the last step that had it: the relative tests of this step then
+    // still have the path's scale, however many steps without load come in
+    // a row (doc/theory.md §11).
     previous_obstacle_displacement = scene.obstacle().displacement();
-    previous_size                  = solution_size();
+    const SolutionSize now         = solution_size();
+    if (step == 1)
+      previous_size = SolutionSize();
+    const auto carry = [](const double now, const double before) {
+      return now > 1e-10 * before ? now : before;
+    };
+    previous_size.l1_norm    = carry(now.l1_norm, previous_size.l1_norm);
+    previous_size.l1_max     = carry(now.l1_max, previous_size.l1_max);
+    previous_size.v_norm     = carry(now.v_norm, previous_size.v_norm);
+    previous_size.v_max      = carry(now.v_max, previous_size.v_max);
+    previous_size.force_norm = carry(now.force_norm, previous_size.force_norm);
+    previous_size.contact_force =
+      carry(now.contact_force, previous_size.contact_force);
     scene.set_time(step_times[step - 1]);
     report.start_step(step, step_times[step - 1]);
 

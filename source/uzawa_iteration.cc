@@ -15,6 +15,20 @@
 
 namespace dualcontact
 {
+  namespace
+  {
+    // sqrt(sum_s g_s^2) over the contact nodes of all ranks
+    template <int dim>
+    double
+    threshold_norm(const ContactSet<dim> &contact, const MPI_Comm comm)
+    {
+      double sum = 0.;
+      for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+        sum += contact.threshold[s] * contact.threshold[s];
+      return std::sqrt(Utilities::MPI::sum(sum, comm));
+    }
+  } // namespace
+
   template <int dim>
   UzawaIteration<dim>::UzawaIteration(const SolverParameters &parameters,
                                       NewtonSolver<dim>      &newton)
@@ -382,7 +396,17 @@ namespace dualcontact
     const TrilinosWrappers::MPI::Vector v_start(v);
     std::vector<IterationRecord>        history;
     unsigned int                        lowered_at = 0;
-    const auto say = [observer](const std::string &text) {
+    // Merged with the threshold iteration on a later step of a load path:
+    // the change of g is measured against the larger of the new g and the
+    // step's first one, the previous step's (doc/theory.md §11). Where the
+    // path brings the body back to its start, g is round-off, and a change
+    // relative to it alone never falls below the tolerance.
+    const double threshold_scale =
+      update_threshold && system.previous.l1_norm > 0. ?
+        threshold_norm(contact, v.get_mpi_communicator()) :
+        0.;
+    std::vector<double> threshold_before;
+    const auto          say = [observer](const std::string &text) {
       if (observer != nullptr)
         observer->note(text);
     };
@@ -427,9 +451,28 @@ namespace dualcontact
                           "The contact solve cannot converge: " + drift_cause +
                           ". It stopped here: " + failure));
           }
-        const auto      update_start = std::chrono::steady_clock::now();
-        IterationRecord record       = update_multipliers(
+        const auto update_start = std::chrono::steady_clock::now();
+        if (threshold_scale > 0.)
+          threshold_before = contact.threshold;
+        IterationRecord record = update_multipliers(
           step_system, contact, v_previous, v, update_threshold);
+        // along a path, the change of g against the previous step's g too
+        if (threshold_scale > 0.)
+          {
+            double sums[2] = {0., 0.};
+            for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+              {
+                sums[0] +=
+                  std::pow(contact.threshold[s] - threshold_before[s], 2);
+                sums[1] += contact.threshold[s] * contact.threshold[s];
+              }
+            Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                                v.get_mpi_communicator(),
+                                ArrayView<double>(sums, 2));
+            record.change_g =
+              relative_change(std::sqrt(sums[0]),
+                              std::max(std::sqrt(sums[1]), threshold_scale));
+          }
         statistics.times += newton_statistics.times;
         statistics.times.multipliers +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() -

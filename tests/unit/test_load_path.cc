@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <sstream>
 
 #include "scene_run.h"
@@ -563,4 +564,92 @@ TEST_CASE("Adapt at every step: the same meshes and the same stick zones on "
     }
   // the mesh follows the growing zone
   CHECK(a[2].mesh.n_dofs > a[0].mesh.n_dofs);
+}
+
+namespace
+{
+  // A 1 x 1 block, its top clamped, on a foundation that starts 0.001 below
+  // it, rises by 0.002 at t = 1 (contact) and then falls away: every step
+  // after t = 1.5 carries no load at all.
+  const std::string lift_off =
+    "subsection Geometry\n  set Type = rectangle\n"
+    "  set Lower left corner = 0, 0\n  set Upper right corner = 1, 1\n"
+    "  set Subdivisions = 2, 2\nend\n"
+    "subsection Material\n  set Young's modulus = 1000\n"
+    "  set Poisson's ratio = 0.3\nend\n"
+    "subsection Boundary conditions\n  set Conditions = 2: contact, 3: "
+    "fixed\nend\n"
+    "subsection Foundation\n  set Point = 0, -0.001\n  set Normal = 0, 1\n"
+    "end\n"
+    "subsection Obstacle\n  set Displacement = 0; 0.002 * if(t <= 1, t, 2 - "
+    "t)\nend\n"
+    "subsection Load path\n  set Times = 1, 1.8, 2, 2.2, 2.4, 2.6\nend\n"
+    "subsection Output\n  set Write vtu = false\nend\n";
+
+  // A 0.75 x 0.43 block on the plane, Coulomb F = 0.92, its top clamped and
+  // pushed down by d at t = 1, back to its start at t = 2: the last step is
+  // the undeformed state, the bottom touching the plane with no force.
+  std::string
+  back_to_start(const double d, const std::string &iteration)
+  {
+    std::ostringstream depth;
+    depth << std::setprecision(10) << d;
+    return "subsection Geometry\n  set Type = rectangle\n"
+           "  set Lower left corner = 0, 0\n"
+           "  set Upper right corner = 0.750309, 0.427227\n"
+           "  set Subdivisions = 7, 4\nend\n"
+           "subsection Material\n  set Young's modulus = 8.37268\n"
+           "  set Poisson's ratio = 0.494342\nend\n"
+           "subsection Boundary conditions\n  set Conditions = 2: contact, "
+           "3: fixed\n  set Displacements = 3: 0; -" +
+           depth.str() +
+           " * if(t <= 1, t, 2 - t)\nend\n"
+           "subsection Friction\n  set Law = coulomb\n"
+           "  set Coefficient = 0.920748\n  set Threshold iteration = " +
+           iteration +
+           "\n  set Threshold tolerance = 8.37282e-07\nend\n"
+           "subsection Load path\n  set Times = 1, 2\nend\n"
+           "subsection Output\n  set Write vtu = false\nend\n";
+  }
+} // namespace
+
+TEST_CASE("Steps without load, however many in a row, and a Coulomb path "
+          "back to the start are solved to u = 0 with no contact force",
+          "[path]")
+{
+  {
+    // five steps in a row without load after the lift-off: the relative
+    // tests keep the scale of the last loaded step
+    const Run                       run("", lift_off);
+    const std::vector<CycleResult> &steps = run.problem->steps();
+    REQUIRE(steps.size() == 6);
+    CHECK(steps[0].zone.contact_force > 1.);
+    for (unsigned int n = 1; n < 6; ++n)
+      {
+        INFO("step " << n + 1 << ": contact force "
+                     << steps[n].zone.contact_force << ", ||u|| "
+                     << steps[n].errors.norm_L2 << ", imbalance "
+                     << steps[n].reactions.imbalance);
+        // u = 0 to the Uzawa tolerance (1e-8) of the loaded step's size
+        CHECK(steps[n].zone.contact_force == 0.);
+        CHECK(steps[n].errors.norm_L2 <= 1e-8 * steps[0].errors.norm_L2);
+      }
+  }
+  // the depths at which the threshold test had no scale left at the last
+  // step (|g| round-off), and others; nested and merged
+  for (const std::string iteration : {"nested", "merged"})
+    for (const double d : {1.0e-4, 1.02e-4, 1.04e-4, 1.05e-4, 1.11e-4})
+      {
+        INFO(iteration << " threshold iteration, depth " << d);
+        const Run                       run("", back_to_start(d, iteration));
+        const std::vector<CycleResult> &steps = run.problem->steps();
+        REQUIRE(steps.size() == 2);
+        CHECK(steps[0].zone.contact_force > 1e-3);
+        INFO("last step: contact force " << steps[1].zone.contact_force
+                                         << ", ||u|| "
+                                         << steps[1].errors.norm_L2);
+        CHECK(std::abs(steps[1].zone.contact_force) <=
+              1e-8 * steps[0].zone.contact_force);
+        CHECK(steps[1].errors.norm_L2 <= 1e-8 * steps[0].errors.norm_L2);
+      }
 }
