@@ -209,6 +209,7 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector previous_u;
     if (parameters.load_path.adapt_at_every_step)
       {
+        predictor.clear(); // a new mesh: nothing to extrapolate on it
         // v, the multipliers and the threshold go with the cells; u^{n-1}
         // is the carried v
         refine_mesh();
@@ -257,6 +258,11 @@ namespace dualcontact
   void
   ContactProblem<dim>::finish_step(CycleResult &result)
   {
+    if (scene.effects().contact && parameters.load_path.predictor)
+      predictor.add_step(solution,
+                         contact_set,
+                         system_rhs,
+                         scene.obstacle().displacement());
     dissipated             = result.step.dissipation_total;
     const Tensor<1, dim> U = scene.obstacle().displacement();
     for (unsigned int c = 0; c < dim; ++c)
@@ -277,7 +283,7 @@ namespace dualcontact
                          parameters.material);
     if (!probes.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      probes.write_step_csv(parameters.output.directory + "/probes_steps.csv");
+      probes.append_step_csv(parameters.output.directory + "/probes_steps.csv");
     if ((step.step - 1) % parameters.load_path.output_interval == 0 ||
         step.step == step.n_steps)
       output_step(step);
@@ -685,8 +691,19 @@ namespace dualcontact
     report.start_contact_solve(record);
 
     // from the previous mesh's solution (nested iteration), or from v = 0
-    // with the prescribed boundary values and l1 = l2 = 0
+    // with the prescribed boundary values and l1 = l2 = 0; a later load
+    // step from the last one's state, or its extrapolation from the last
+    // two (step_predictor.h)
     v = initial_displacement();
+    if (carried_from_step && parameters.load_path.predictor)
+      {
+        record.predictor = predictor.predict(system_rhs,
+                                             scene.obstacle().displacement(),
+                                             v,
+                                             contact_set);
+        if (record.predictor > 0.)
+          constraints.distribute(v);
+      }
     static_cast<ContactStatistics &>(record) =
       threshold_iteration.solve(contact_system(),
                                 contact_set,

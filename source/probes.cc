@@ -432,14 +432,21 @@ namespace dualcontact
 
   template <int dim>
   void
-  Probes<dim>::write_step_csv(const std::string &filename) const
+  Probes<dim>::append_step_csv(const std::string &filename)
   {
-    std::ofstream csv(filename);
-    csv << "step,time,";
-    write_header(csv);
-    csv << std::setprecision(12);
-    for (const Value &v : all_step_values)
+    std::ofstream csv;
+    if (step_values_written == 0)
       {
+        csv.open(filename, std::ios::trunc);
+        csv << "step,time,";
+        write_header(csv);
+      }
+    else
+      csv.open(filename, std::ios::app);
+    csv << std::setprecision(12);
+    for (; step_values_written < all_step_values.size(); ++step_values_written)
+      {
+        const Value &v = all_step_values[step_values_written];
         csv << v.step << ',' << v.time << ',';
         write_row(csv, v);
       }

@@ -4,6 +4,7 @@
 #include <dualcontact/report.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -196,7 +197,11 @@ namespace dualcontact
       , mpi_communicator(mpi_communicator)
       , pcout(out, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       , quantities(report_quantities(parameters, scene))
+      , loop_figure(std::make_unique<LoopFigure<dim>>())
   {}
+
+  template <int dim>
+  Report<dim>::~Report() = default;
 
   template <int dim>
   bool
@@ -553,45 +558,63 @@ namespace dualcontact
 
   template <int dim>
   void
-  Report<dim>::write_csv_files() const
+  Report<dim>::write_cycles_csv() const
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
-    const std::string &directory = parameters.output.directory;
-    {
-      std::ofstream csv(directory + "/cycles.csv");
-      cycle_table.write_csv(csv);
-    }
-    if (!scene.effects().contact)
-      return;
-    CsvTable t;
-    for (const IterationRecord &r : iteration_log)
+    std::ofstream csv(parameters.output.directory + "/cycles.csv");
+    cycle_table.write_csv(csv);
+  }
+
+  template <int dim>
+  void
+  Report<dim>::append_iterations_csv()
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0 ||
+        !scene.effects().contact)
       {
-        t.add_value("cycle", r.cycle);
-        if (parameters.load_path.step_times().size() > 1)
-          t.add_value("step", r.step);
-        t.add_value("loop", to_string(r.loop));
-        t.add_value("uzawa_step", r.uzawa_step);
-        t.add_value("index", r.index);
-        t.add_value("uzawa_steps", r.uzawa_steps);
-        t.add_value("newton_steps", r.newton_steps);
-        t.add_value("cg_iterations", r.cg_iterations);
-        t.add_value("amg_setups", r.amg_setups);
-        t.add_value("n_active", static_cast<std::uint64_t>(r.n_active));
-        t.add_value("n_stick", static_cast<std::uint64_t>(r.n_stick));
-        t.add_value("n_slip", static_cast<std::uint64_t>(r.n_slip));
-        t.add_value("gradient", r.gradient);
-        t.add_value("step_length", r.step_length);
-        t.add_value("change_l1", r.change_l1);
-        t.add_value("change_l2", r.change_l2);
-        t.add_value("change_g", r.change_g);
-        t.add_value("change_v", r.change_v);
-        t.add_value("violation", r.violation);
-        t.add_value("complementarity", r.complementarity);
-        t.add_value("time", r.time);
+        iterations_written = iteration_log.size(); // by rank 0
+        return;
       }
-    std::ofstream csv(directory + "/iterations.csv");
-    t.write_csv(csv);
+    if (!iterations_file_started)
+      iterations_file.open(parameters.output.directory + "/iterations.csv");
+    iterations_file_started = true;
+    const bool path         = parameters.load_path.n_steps_on_path() > 1;
+    std::vector<AppendedCsvFile::Row> rows;
+    for (; iterations_written < iteration_log.size(); ++iterations_written)
+      {
+        const IterationRecord &r    = iteration_log[iterations_written];
+        const auto             text = [](const auto value) {
+          std::ostringstream out;
+          out << std::scientific << std::setprecision(10) << value;
+          return out.str();
+        };
+        AppendedCsvFile::Row row = {{"cycle", text(r.cycle)}};
+        if (path)
+          row.emplace_back("step", text(r.step));
+        row.insert(row.end(),
+                   {{"loop", to_string(r.loop)},
+                    {"uzawa_step", text(r.uzawa_step)},
+                    {"index", text(r.index)},
+                    {"uzawa_steps", text(r.uzawa_steps)},
+                    {"newton_steps", text(r.newton_steps)},
+                    {"cg_iterations", text(r.cg_iterations)},
+                    {"amg_setups", text(r.amg_setups)},
+                    {"n_active", text(r.n_active)},
+                    {"n_stick", text(r.n_stick)},
+                    {"n_slip", text(r.n_slip)},
+                    {"gradient", text(r.gradient)},
+                    {"step_length", text(r.step_length)},
+                    {"change_l1", text(r.change_l1)},
+                    {"change_l2", text(r.change_l2)},
+                    {"change_g", text(r.change_g)},
+                    {"change_v", text(r.change_v)},
+                    {"violation", text(r.violation)},
+                    {"complementarity", text(r.complementarity)},
+                    {"time", text(r.time)}});
+        rows.push_back(std::move(row));
+      }
+    iterations_file.add_rows(rows);
   }
 
   template <int dim>
@@ -612,6 +635,9 @@ namespace dualcontact
       step_results.empty() ? cycle_results : step_results;
     result.time.total =
       (before.empty() ? 0. : before.back().time.total) + result.time.cycle;
+    result.time.elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
     Utilities::System::MemoryStats stats;
     Utilities::System::get_memory_stats(stats);
     result.memory_mb =
@@ -632,7 +658,8 @@ namespace dualcontact
       print_cycle_row(result);
     cycle_results.push_back(result);
     add_table_rows(result);
-    write_csv_files();
+    write_cycles_csv();
+    append_iterations_csv();
     return cycle_results.back();
   }
 
@@ -640,10 +667,22 @@ namespace dualcontact
   void
   Report<dim>::start_step(const unsigned int step, const double time)
   {
+    // memory flat along a long path: of the later steps' iterations, only
+    // the last step's stay in memory (iterations.csv has all of them)
+    const auto first_later =
+      std::find_if(iteration_log.begin(),
+                   iteration_log.end(),
+                   [](const IterationRecord &r) { return r.step > 1; });
+    const auto written = iteration_log.begin() + iterations_written;
+    if (first_later < written)
+      {
+        iterations_written -= written - first_later;
+        iteration_log.erase(first_later, written);
+      }
     uzawa_header_shown = false;
     if (shows(Verbosity::normal))
       pcout << "Load step " << step << " of "
-            << parameters.load_path.step_times().size() << ", t = " << time
+            << parameters.load_path.n_steps_on_path() << ", t = " << time
             << '\n';
   }
 
@@ -673,7 +712,8 @@ namespace dualcontact
     if (parameters.load_path.adapt_at_every_step && r.step.step > 1)
       items.push_back(std::to_string(r.mesh.n_dofs) + " DoFs");
     items.insert(items.end(),
-                 {"Uzawa " + std::to_string(r.solve.uzawa_steps),
+                 {"Uzawa " + std::to_string(r.solve.uzawa_steps) +
+                    (r.solve.predictor > 0. ? " (extrapolated)" : ""),
                   "Newton " + std::to_string(r.solve.newton_steps),
                   "CG " + std::to_string(r.solve.cg_iterations)});
     if (scene.effects().contact)
@@ -693,20 +733,24 @@ namespace dualcontact
     label << "step " << std::setw(4) << r.step.step << ": ";
     pcout << wrap(label.str(), items, ", ", "            ") << std::flush;
 
-    TableEntries csv;
-    for (const auto &quantity : quantities)
-      quantity->csv_entries(result, csv);
-    csv.write_to(step_table);
+    // the step's row of steps.csv and its iterations appended, the loop's
+    // script updated: a step costs the same however many came before
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
-        std::ofstream file(parameters.output.directory + "/steps.csv");
-        step_table.write_csv(file);
+        TableEntries csv;
+        for (const auto &quantity : quantities)
+          quantity->csv_entries(result, csv);
+        if (step_results.size() == 1)
+          steps_file.open(parameters.output.directory + "/steps.csv");
+        steps_file.add_rows({csv.csv_row()});
         if (scene.effects().contact)
-          write_loop_script<dim>(parameters.output.directory,
-                                 step_results,
-                                 scene.obstacle_moves());
+          {
+            loop_figure->add(result);
+            loop_figure->write(parameters.output.directory,
+                               scene.obstacle_moves());
+          }
       }
-    write_csv_files(); // iterations.csv, with the step's iterations
+    append_iterations_csv();
     return step_results.back();
   }
 

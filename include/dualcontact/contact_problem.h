@@ -34,6 +34,7 @@
 #include <dualcontact/records.h>
 #include <dualcontact/report.h>
 #include <dualcontact/scene.h>
+#include <dualcontact/step_predictor.h>
 #include <dualcontact/threshold_iteration.h>
 #include <dualcontact/uzawa_iteration.h>
 
@@ -128,7 +129,7 @@ namespace dualcontact
      * A solved step of the load path: the energy dissipated up to it, the
      * loaded boundaries' mean displacements, the probes (probes_steps.csv),
      * its files (every <Load path/Output interval>-th and the last), its
-     * row of steps.csv and line on screen.
+     * row of steps.csv and line on screen; the predictor keeps its state.
      */
     void
     finish_step(CycleResult &result);
@@ -242,7 +243,11 @@ namespace dualcontact
       return report.steps();
     }
 
-    /** Every Newton, Uzawa and threshold step of every cycle. */
+    /**
+     * Every Newton, Uzawa and threshold step of every cycle, and of a load
+     * path's last step (iterations.csv has those of every step: a long
+     * path keeps its memory flat).
+     */
     const std::vector<IterationRecord> &
     iterations() const
     {
@@ -435,6 +440,8 @@ namespace dualcontact
     // step, and the energy dissipated so far
     Tensor<1, dim> previous_obstacle_displacement;
     double         dissipated = 0.;
+    // the last two steps on this mesh, for the next step's start
+    StepPredictor<dim> predictor;
     // the size of the previous step's solution (ContactSystem::previous)
     SolutionSize                  previous_size;
     TrilinosWrappers::MPI::Vector carried_v;

@@ -475,10 +475,18 @@ namespace dualcontact
     std::vector<double> times; // empty: uniform
     bool                adapt_at_every_step = false;
     unsigned int        output_interval     = 1;
+    bool                predictor           = true;
 
     /** The times of the steps, from the list or uniform. */
     std::vector<double>
     step_times() const;
+
+    /** Their number, step_times().size() (without building the list). */
+    std::size_t
+    n_steps_on_path() const
+    {
+      return times.empty() ? n_steps : times.size();
+    }
 
     static void
     declare_parameters(EntryDeclarer &declarer);

@@ -130,12 +130,14 @@ namespace dualcontact
     write_csv(const std::string &filename) const;
 
     /**
-     * Write step_values() as CSV: one row per step and probe, the columns
-     * step, time, then those of write_csv() from probe on. Call on one
+     * step_values() as CSV: one row per step and probe, the columns step,
+     * time, then those of write_csv() from probe on. The first call writes
+     * the file afresh, a later one appends the rows that came since (a
+     * step's cost does not depend on the steps before it). Call on one
      * rank.
      */
     void
-    write_step_csv(const std::string &filename) const;
+    append_step_csv(const std::string &filename);
 
   private:
     /** The values at every point for `solution`. Collective. */
@@ -154,6 +156,7 @@ namespace dualcontact
     std::vector<Point<dim>> points;
     std::vector<Value>      all_values;
     std::vector<Value>      all_step_values;
+    std::size_t             step_values_written = 0; // by append_step_csv
   };
 } // namespace dualcontact
 

@@ -56,6 +56,9 @@ namespace dualcontact
     // the applied load toward the foundation (tractions and body force;
     // not the lifting of prescribed displacements)
     double normal_load = 0.;
+    // a later load step: the factor of the extrapolation it started from
+    // (step_predictor.h), 0 where it started from the last step's state
+    double predictor = 0.;
     // Solver/Time a reference linear solve: AMG set-up + CG of one solve
     double       time_reference       = 0.;
     unsigned int reference_iterations = 0;
@@ -168,6 +171,7 @@ namespace dualcontact
     double output   = 0.;
     double total    = 0.; // all phases of all cycles up to here
     double cycle    = 0.; // all phases of this cycle (screen only)
+    double elapsed  = 0.; // since the run began, everything included
   };
 
   /**

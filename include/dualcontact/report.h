@@ -24,10 +24,13 @@
 #include <dualcontact/report_quantity.h>
 #include <dualcontact/scene.h>
 
+#include <chrono>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dualcontact
@@ -43,6 +46,42 @@ namespace dualcontact
     write_csv(std::ostream &out) const;
   };
 
+  /**
+   * A CSV file that grows a row at a time, for the tables of a load path:
+   * each row is appended, so that its cost does not depend on how many
+   * rows came before (a path of many thousand steps). The columns are
+   * those of the first row. A row with a column the header lacks rewrites
+   * the file once, read back from the disk, with the new column added at
+   * the end and left empty in the rows before; a row that lacks a column
+   * leaves it empty. Nothing is kept in memory but the header. Use on one
+   * rank.
+   */
+  class AppendedCsvFile
+  {
+  public:
+    using Row = std::vector<std::pair<std::string, std::string>>;
+
+    /** Start `filename` afresh: it is emptied at the first row. */
+    void
+    open(const std::string &filename);
+
+    /** Append `rows` (flushed, so that the file is whole after each call). */
+    void
+    add_rows(const std::vector<Row> &rows);
+
+  private:
+    /** The file again, its rows padded to the columns now in `columns`. */
+    void
+    rewrite_with_columns(const std::size_t old_size);
+
+    std::string              name_of_file;
+    std::vector<std::string> columns;
+    std::ofstream            file;
+  };
+
+  template <int dim>
+  class LoopFigure;
+
   template <int dim>
   class Report : public IterationObserver
   {
@@ -52,6 +91,8 @@ namespace dualcontact
            const TimerOutput &timer,
            MPI_Comm           mpi_communicator,
            std::ostream      &out);
+
+    ~Report();
 
     /** The scene and the effects composed for it. */
     void
@@ -109,7 +150,7 @@ namespace dualcontact
     /**
      * A step of the load path is done (the first one: the last cycle's
      * result, times and all): fill the times of a later step, print its
-     * line, add its row to steps.csv and rewrite the file. Returns the
+     * line, append its row to steps.csv. Returns the
      * completed record.
      */
     const CycleResult &
@@ -131,6 +172,7 @@ namespace dualcontact
       return cycle_results;
     }
 
+    /** The cycles' iterations, and those of a load path's last step. */
     const std::vector<IterationRecord> &
     iterations() const
     {
@@ -176,12 +218,20 @@ namespace dualcontact
     void
     add_table_rows(const CycleResult &result);
 
+    /** cycles.csv, all of it (a cycle is a new mesh: there are few). */
     void
-    write_csv_files() const;
+    write_cycles_csv() const;
+
+    /** The iterations not yet in iterations.csv, appended to it. */
+    void
+    append_iterations_csv();
 
     const Parameters  &parameters;
     const Scene<dim>  &scene;
     const TimerOutput &timer;
+    // when the run began (the report is made with the problem)
+    const std::chrono::steady_clock::time_point start =
+      std::chrono::steady_clock::now();
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
 
@@ -199,10 +249,14 @@ namespace dualcontact
     // the quantities the scene has: their columns and lines
     std::vector<std::unique_ptr<ReportQuantity<dim>>> quantities;
 
-    CsvTable         cycle_table;  // every quantity's columns: cycles.csv
-    CsvTable         step_table;   // the same, one row per step: steps.csv
-    ConvergenceTable screen_table; // the summary on screen
-    bool             summary_has_errors = false; // errors in screen_table
+    CsvTable        cycle_table;     // every quantity's columns: cycles.csv
+    AppendedCsvFile steps_file;      // the same, one row per step: steps.csv
+    AppendedCsvFile iterations_file; // iteration_log: iterations.csv
+    std::size_t     iterations_written      = 0;     // of iteration_log, in it
+    bool            iterations_file_started = false; // opened afresh
+    std::unique_ptr<LoopFigure<dim>> loop_figure;    // steps.gp
+    ConvergenceTable                 screen_table;   // the summary on screen
+    bool summary_has_errors = false;                 // errors in screen_table
   };
 } // namespace dualcontact
 

@@ -48,6 +48,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -80,6 +81,14 @@ namespace dualcontact
     /** One row of `table`, the entries in the order of their places. */
     void
     write_to(TableHandler &table) const;
+
+    /**
+     * The same row as (column, text) pairs, the text as `table`'s CSV has
+     * it: integers as they are, reals with 10 digits after the point in
+     * scientific notation.
+     */
+    std::vector<std::pair<std::string, std::string>>
+    csv_row() const;
 
   private:
     struct Entry

@@ -58,6 +58,17 @@ namespace dualcontact
       "Write the fields of every n-th step and of the last (contact_step_*.csv "
       "and, with <Output/Write vtu>, the .vtu files) [-]; steps.csv gets "
       "every step.");
+    declarer.declare_entry(
+      "Predictor",
+      "true",
+      EntryPattern::boolean(),
+      "true: a later step starts from the linear extrapolation of the last "
+      "two steps (v, the multipliers and the threshold), where the loads "
+      "keep their direction, and from the last step's state where they turn "
+      "(and at the second step, and on a mesh adapted for the step). false: "
+      "every later step starts from the last step's state. Only the cost "
+      "differs: steps.csv's column predictor has the factor of the "
+      "extrapolation (0: none), uzawa_steps what the step took.");
     declarer.leave_subsection();
   }
 
@@ -70,6 +81,7 @@ namespace dualcontact
     times               = parse_doubles(prm.get("Times"));
     adapt_at_every_step = prm.get_bool("Adapt at every step");
     output_interval     = prm.get_integer("Output interval");
+    predictor           = prm.get_bool("Predictor");
     prm.leave_subsection();
   }
 
@@ -111,7 +123,12 @@ namespace dualcontact
              "<Load path/Times> gives the times"},
             {one_step,
              "Load path",
-             {"Adapt at every step", "Output interval"},
-             "the path has one step"}};
+             {"Adapt at every step", "Output interval", "Predictor"},
+             "the path has one step"},
+            {!one_step && adapt_at_every_step,
+             "Load path",
+             {"Predictor"},
+             "<Load path/Adapt at every step> gives each step a mesh of its "
+             "own, on which no earlier step was solved"}};
   }
 } // namespace dualcontact

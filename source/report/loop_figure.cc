@@ -1,58 +1,66 @@
 #include "loop_figure.h"
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 
 namespace dualcontact
 {
-  namespace
+  template <int dim>
+  void
+  LoopFigure<dim>::Range::add(const double value)
   {
-    // the spread max - min of f(step) over the steps
-    template <typename F>
-    double
-    spread(const std::vector<CycleResult> &steps, const F &f)
-    {
-      double lowest = 0., highest = 0.;
-      for (const CycleResult &r : steps)
-        {
-          lowest  = std::min(lowest, f(r));
-          highest = std::max(highest, f(r));
-        }
-      return highest - lowest;
-    }
-  } // namespace
+    lowest  = std::min(lowest, value);
+    highest = std::max(highest, value);
+  }
 
   template <int dim>
   void
-  write_loop_script(const std::string              &directory,
-                    const std::vector<CycleResult> &steps,
-                    const bool                      obstacle_moves)
+  LoopFigure<dim>::add(const CycleResult &step)
   {
-    if (steps.empty())
+    if (empty)
+      {
+        // the normal: the axis of the largest contact force at the first
+        // step; the loaded parts: those the first step has
+        for (unsigned int c = 1; c < dim; ++c)
+          if (std::abs(step.zone.resultant[c]) >
+              std::abs(step.zone.resultant[normal]))
+            normal = c;
+        for (const auto &[id, u] : step.step.boundary_displacement)
+          boundary[id] = {};
+        empty = false;
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        force[c].add(step.zone.resultant[c]);
+        obstacle[c].add(step.step.obstacle_displacement[c]);
+      }
+    for (auto &[id, ranges] : boundary)
+      {
+        const auto found = step.step.boundary_displacement.find(id);
+        for (unsigned int c = 0; c < dim; ++c)
+          ranges[c].add(found == step.step.boundary_displacement.end() ?
+                          0. :
+                          found->second[c]);
+      }
+  }
+
+  template <int dim>
+  void
+  LoopFigure<dim>::write(const std::string &directory,
+                         const bool         obstacle_moves) const
+  {
+    if (empty)
       return;
     static const char axes[] = "xyz";
 
-    // the normal: the axis of the largest contact force at the first step
-    unsigned int normal = 0;
-    for (unsigned int c = 1; c < dim; ++c)
-      if (std::abs(steps[0].zone.resultant[c]) >
-          std::abs(steps[0].zone.resultant[normal]))
-        normal = c;
     // the tangential axis along which the force varies most
     unsigned int axis       = normal == 0 ? 1 : 0;
     double       force_span = -1.;
     for (unsigned int c = 0; c < dim; ++c)
-      if (c != normal)
+      if (c != normal && force[c].spread() > force_span)
         {
-          const double s = spread(steps, [c](const CycleResult &r) {
-            return r.zone.resultant[c];
-          });
-          if (s > force_span)
-            {
-              force_span = s;
-              axis       = c;
-            }
+          force_span = force[c].spread();
+          axis       = c;
         }
     // the displacement that moves most along it
     const std::string component(1, axes[axis]);
@@ -60,29 +68,18 @@ namespace dualcontact
     double            span = -1.;
     if (obstacle_moves)
       {
-        span   = spread(steps, [axis](const CycleResult &r) {
-          return r.step.obstacle_displacement[axis];
-        });
+        span   = obstacle[axis].spread();
         column = "obstacle_displacement_" + component;
         label  = component + "-displacement of the obstacle";
       }
-    for (const auto &[id, u] : steps[0].step.boundary_displacement)
-      {
-        const types::boundary_id part = id;
-        const double s = spread(steps, [axis, part](const CycleResult &r) {
-          const auto found = r.step.boundary_displacement.find(part);
-          return found == r.step.boundary_displacement.end() ?
-                   0. :
-                   found->second[axis];
-        });
-        if (s > span)
-          {
-            span   = s;
-            column = "displacement_" + std::to_string(id) + "_" + component;
-            label  = "mean " + component + "-displacement of boundary " +
-                    std::to_string(id);
-          }
-      }
+    for (const auto &[id, ranges] : boundary)
+      if (ranges[axis].spread() > span)
+        {
+          span   = ranges[axis].spread();
+          column = "displacement_" + std::to_string(id) + "_" + component;
+          label  = "mean " + component + "-displacement of boundary " +
+                  std::to_string(id);
+        }
     if (column.empty()) // nothing loaded moves: the load against the time
       {
         column = "time";
@@ -106,12 +103,6 @@ namespace dualcontact
        << "')) with linespoints pointtype 7 pointsize 0.6\n";
   }
 
-  template void
-  write_loop_script<2>(const std::string &,
-                       const std::vector<CycleResult> &,
-                       const bool);
-  template void
-  write_loop_script<3>(const std::string &,
-                       const std::vector<CycleResult> &,
-                       const bool);
+  template class LoopFigure<2>;
+  template class LoopFigure<3>;
 } // namespace dualcontact

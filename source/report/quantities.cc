@@ -5,6 +5,8 @@
 #include <dualcontact/report_quantity.h>
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 namespace dualcontact
@@ -33,18 +35,41 @@ namespace dualcontact
     });
   }
 
+  namespace
+  {
+    template <typename EntryType>
+    std::vector<EntryType>
+    by_place(std::vector<EntryType> entries)
+    {
+      std::stable_sort(entries.begin(),
+                       entries.end(),
+                       [](const EntryType &a, const EntryType &b) {
+                         return a.place < b.place;
+                       });
+      return entries;
+    }
+  } // namespace
+
   void
   TableEntries::write_to(TableHandler &table) const
   {
-    std::vector<Entry> sorted = entries;
-    std::stable_sort(sorted.begin(),
-                     sorted.end(),
-                     [](const Entry &a, const Entry &b) {
-                       return a.place < b.place;
-                     });
-    for (const Entry &e : sorted)
+    for (const Entry &e : by_place(entries))
       std::visit([&](const auto value) { table.add_value(e.key, value); },
                  e.value);
+  }
+
+  std::vector<std::pair<std::string, std::string>>
+  TableEntries::csv_row() const
+  {
+    std::vector<std::pair<std::string, std::string>> row;
+    for (const Entry &e : by_place(entries))
+      {
+        std::ostringstream text;
+        text << std::scientific << std::setprecision(10);
+        std::visit([&text](const auto value) { text << value; }, e.value);
+        row.emplace_back(e.key, text.str());
+      }
+    return row;
   }
 
   void

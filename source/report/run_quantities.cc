@@ -393,7 +393,7 @@ namespace dualcontact
 
     /**
      * Every scene: time_refine, time_setup, time_assembly, time_solve,
-     * time_output, time_total.
+     * time_output, time_total, time_elapsed.
      */
     template <int dim>
     class WallTimes : public ReportQuantity<dim>
@@ -410,6 +410,7 @@ namespace dualcontact
         t.add(500, "time_solve", r.time.solve);
         t.add(510, "time_output", r.time.output);
         t.add(520, "time_total", r.time.total);
+        t.add(525, "time_elapsed", r.time.elapsed);
       }
 
       void

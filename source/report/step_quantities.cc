@@ -13,10 +13,11 @@ namespace dualcontact
     using namespace report_format;
 
     /**
-     * A load path of several steps: step, time; with friction dissipation,
-     * dissipation_total; with an obstacle moved by <Obstacle/Displacement>
-     * obstacle_displacement_x, _y (_z); the mean displacement of each loaded
-     * boundary part i, displacement_i_x, _y (_z).
+     * A load path of several steps: step, time; with contact predictor (the
+     * factor of the extrapolation the step started from, 0: none); with
+     * friction dissipation, dissipation_total; with an obstacle moved by
+     * <Obstacle/Displacement> obstacle_displacement_x, _y (_z); the mean
+     * displacement of each loaded boundary part i, displacement_i_x, _y (_z).
      */
     template <int dim>
     class LoadStep : public ReportQuantity<dim>
@@ -36,6 +37,8 @@ namespace dualcontact
         static const char *axes[] = {"x", "y", "z"};
         t.add(4, "step", r.step.step);
         t.add(6, "time", r.step.time);
+        if (this->scene.effects().contact)
+          t.add(152, "predictor", r.solve.predictor);
         if (this->scene.effects().contact &&
             this->scene.effects().friction_law().has_friction())
           {

@@ -653,3 +653,61 @@ TEST_CASE("Steps without load, however many in a row, and a Coulomb path "
         CHECK(steps[1].errors.norm_L2 <= 1e-8 * steps[0].errors.norm_L2);
       }
 }
+
+TEST_CASE("The predictor changes the cost of the steps, not their answer: "
+          "the Cattaneo-Mindlin cycle with and without it",
+          "[path]")
+{
+  const std::string coarse =
+    "subsection Refinement\n  set Number of cycles = 1\nend\n";
+  const Run                       predicted("cattaneo_mindlin.prm", coarse);
+  const Run                       warm("cattaneo_mindlin.prm",
+                 coarse +
+                   "subsection Load path\n  set Predictor = false\nend\n");
+  const std::vector<CycleResult> &a = predicted.problem->steps(),
+                                 &b = warm.problem->steps();
+  REQUIRE(a.size() == 16);
+  REQUIRE(b.size() == 16);
+  // pressed to t = 1 in four steps, sheared to t = 2, back to t = 3,
+  // forward to t = 4: the second step has one state before it, and the
+  // steps at t = 1.25, 2.25, 3.25 turn the path (the extrapolation would
+  // overshoot); every other later step is extrapolated, at alpha = 1
+  unsigned int uzawa_a = 0, uzawa_b = 0;
+  for (unsigned int n = 0; n < 16; ++n)
+    {
+      INFO("step " << n + 1);
+      const bool turn = n < 2 || n == 4 || n == 8 || n == 12;
+      CHECK(b[n].solve.predictor == 0.);
+      if (turn)
+        CHECK(a[n].solve.predictor == 0.);
+      else
+        CHECK(std::abs(a[n].solve.predictor - 1.) <= 1e-10);
+      // the same stick and slip zones, the same forces
+      CHECK(a[n].solve.n_stick == b[n].solve.n_stick);
+      CHECK(a[n].solve.n_slip == b[n].solve.n_slip);
+      CHECK(std::abs(a[n].zone.contact_force - b[n].zone.contact_force) <=
+            1e-7 * b[n].zone.contact_force);
+      CHECK(std::abs(a[n].zone.tangential_force - b[n].zone.tangential_force) <=
+            1e-7 * b[n].zone.contact_force);
+      uzawa_a += a[n].solve.uzawa_steps;
+      uzawa_b += b[n].solve.uzawa_steps;
+    }
+  // the tractions of the last step, node by node, to 1e-6 F p0
+  const auto ta = tractions(predicted), tb = tractions(warm);
+  REQUIRE(ta.size() == tb.size());
+  double p0 = 0., difference = 0.;
+  for (std::size_t i = 0; i < ta.size(); ++i)
+    {
+      p0         = std::max(p0, tb[i][1]);
+      difference = std::max({difference,
+                             std::abs(ta[i][1] - tb[i][1]),
+                             std::abs(ta[i][2] - tb[i][2])});
+    }
+  const double F = 0.3;
+  INFO("largest traction difference "
+       << difference << ", F p0 " << F * p0 << "; Uzawa steps " << uzawa_a
+       << " with the predictor, " << uzawa_b << " without");
+  CHECK(difference <= 1e-6 * F * p0);
+  // it saves Uzawa steps (one in seven on the extrapolated shear steps)
+  CHECK(uzawa_a < uzawa_b);
+}

@@ -111,6 +111,7 @@ namespace
                                                 "time_solve",
                                                 "time_output",
                                                 "time_total",
+                                                "time_elapsed",
                                                 "time_newton_matrix",
                                                 "time_amg_setup",
                                                 "time_cg",
