@@ -33,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 
 namespace dualcontact
 {
@@ -103,7 +104,7 @@ namespace dualcontact
               refine_mesh();
 
             result          = CycleResult();
-            result.step     = step_record(1);
+            result.step     = step_record(1, nullptr);
             result.mesh     = setup_system(cycle);
             result.transfer = transfer_fields();
             report.start_cycle(result.mesh, result.transfer);
@@ -117,28 +118,18 @@ namespace dualcontact
           }
 
         // the later steps, each from the state the step before reached
-        // (doc/theory.md §11)
+        // (doc/theory.md §11), at the times step control gives
         if (step_times.size() > 1)
           finish_step(result);
-        for (unsigned int step = 2; step <= step_times.size(); ++step)
-          try
-            {
-              result      = CycleResult();
-              result.step = start_step(step, result);
-              solve_and_measure(result);
-              finish_step(result);
-            }
-          catch (const InputError &error)
-            {
-              // a load the obstacle cannot hold: the steps before are
-              // written, and the message says which step failed
-              throw InputError(step_failure(step) + error.what(), error.code);
-            }
-          catch (...)
-            {
-              report.warning(step_failure(step) + "the solve failed.");
-              throw;
-            }
+        StepControl control(step_times, parameters.load_path);
+        for (unsigned int step = 2; !control.finished(); ++step)
+          {
+            result      = CycleResult();
+            result.step = start_step(step, control, result);
+            solve_step(control, result);
+            finish_step(result);
+            control.accept();
+          }
         report.finish();
       }
     catch (...)
@@ -150,11 +141,14 @@ namespace dualcontact
 
   template <int dim>
   std::string
-  ContactProblem<dim>::step_failure(const unsigned int step) const
+  ContactProblem<dim>::step_failure(const unsigned int step,
+                                    const double       t) const
   {
-    return "At load step " + std::to_string(step) + " of " +
-           std::to_string(step_times.size()) +
-           " (t = " + number_text(step_times[step - 1]) +
+    return "At load step " + std::to_string(step) +
+           (parameters.load_path.adaptive_steps ?
+              std::string() :
+              " of " + std::to_string(step_times.size())) +
+           " (t = " + number_text(t) +
            "; the steps before "
            "are written, steps.csv has them): ";
   }
@@ -181,7 +175,9 @@ namespace dualcontact
 
   template <int dim>
   StepRecord
-  ContactProblem<dim>::start_step(const unsigned int step, CycleResult &result)
+  ContactProblem<dim>::start_step(const unsigned int step,
+                                  const StepControl &control,
+                                  CycleResult       &result)
   {
     // the state the step before reached: u^{n-1}, its size, and the
     // obstacle there. A size that the step before had next to none of (a
@@ -203,10 +199,10 @@ namespace dualcontact
     previous_size.force_norm = carry(now.force_norm, previous_size.force_norm);
     previous_size.contact_force =
       carry(now.contact_force, previous_size.contact_force);
-    scene.set_time(step_times[step - 1]);
-    report.start_step(step, step_times[step - 1]);
+    const StepRecord record = step_record(step, &control);
+    scene.set_time(record.time);
+    report.start_step(record);
 
-    TrilinosWrappers::MPI::Vector previous_u;
     if (parameters.load_path.adapt_at_every_step)
       {
         predictor.clear(); // a new mesh: nothing to extrapolate on it
@@ -215,42 +211,143 @@ namespace dualcontact
         refine_mesh();
         result.mesh     = setup_system(report.cycles().size());
         result.transfer = transfer_fields();
-        previous_u.reinit(locally_owned_dofs,
-                          locally_relevant_dofs,
-                          mpi_communicator);
-        previous_u = carried_v;
+        step_start_u.reinit(locally_owned_dofs,
+                            locally_relevant_dofs,
+                            mpi_communicator);
+        step_start_u = carried_v;
       }
     else
       {
-        // the same mesh: its constraints at the new time, the contact nodes
-        // at the obstacle's new place, the multipliers as they are
+        // the same mesh: the multipliers as they are
         result.mesh = report.cycles().back().mesh;
-        make_constraints();
-        if (scene.effects().contact)
-          contact_set.place_obstacle(scene, mpi_communicator);
+        move_to_step_time();
         carried_v.reinit(locally_owned_dofs, mpi_communicator);
         carried_v                  = solution;
         carried                    = true;
         result.transfer.warm_start = true;
-        previous_u                 = solution;
-        same_stiffness             = true;
+        step_start_u.reinit(locally_owned_dofs,
+                            locally_relevant_dofs,
+                            mpi_communicator);
+        step_start_u   = solution;
+        same_stiffness = true;
       }
     carried_from_step = true;
     if (scene.effects().contact)
-      contact_set.set_slip_origin(previous_u,
+      contact_set.set_slip_origin(step_start_u,
                                   scene.obstacle().displacement() -
                                     previous_obstacle_displacement);
-    return step_record(step);
+    return record;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::move_to_step_time()
+  {
+    make_constraints();
+    if (scene.effects().contact)
+      contact_set.place_obstacle(scene, mpi_communicator);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_step(StepControl &control, CycleResult &result)
+  {
+    // the state the step starts from, kept for a retry: the step's first
+    // guess and the multipliers, threshold and predictor it starts from
+    const bool adaptive = parameters.load_path.adaptive_steps;
+    TrilinosWrappers::MPI::Vector       start_solution, start_v;
+    std::unique_ptr<ContactSet<dim>>    start_contact;
+    std::unique_ptr<StepPredictor<dim>> start_predictor;
+    const bool                          start_carried = carried;
+    if (adaptive)
+      {
+        start_solution  = solution;
+        start_v         = carried_v;
+        start_contact   = std::make_unique<ContactSet<dim>>(contact_set);
+        start_predictor = std::make_unique<StepPredictor<dim>>(predictor);
+      }
+    const unsigned int step = result.step.step;
+    for (;;)
+      try
+        {
+          solve_and_measure(result);
+          return;
+        }
+      catch (const InputError &error)
+        {
+          // input that fails at this time (a load the obstacle cannot hold,
+          // an expression that is not finite), which no smaller step
+          // helps: the steps before are written, and the message says
+          // which step failed
+          throw InputError(step_failure(step, result.step.time) + error.what(),
+                           error.code);
+        }
+      catch (const std::exception &error)
+        {
+          std::string why = error.what();
+          if (const auto *exception =
+                dynamic_cast<const ExceptionBase *>(&error))
+            {
+              std::ostringstream info;
+              exception->print_info(info);
+              why = Utilities::trim(info.str());
+            }
+          if (!control.cut())
+            {
+              report.warning(
+                step_failure(step, result.step.time) + "the solve failed" +
+                (adaptive ? " at the minimum step (<Load path/Minimum "
+                            "step> = " +
+                              number_text(control.minimum_step()) + ")." :
+                            " (<Load path/Step control> = adaptive tries a "
+                            "failed step again in smaller steps)."));
+              throw;
+            }
+          // the step again, smaller, from the state it started from
+          report.cut_step(result.step,
+                          why.substr(0, why.find(" Likely causes")),
+                          control.next_time());
+          solution        = start_solution;
+          carried_v       = start_v;
+          carried         = start_carried;
+          contact_set     = *start_contact;
+          predictor       = *start_predictor;
+          indicator_valid = false;
+          same_stiffness  = false; // a new AMG: the failed try's is no guide
+          CycleResult retry;       // on the step's mesh, as carried to it
+          retry.mesh              = result.mesh;
+          retry.transfer          = result.transfer;
+          const StepRecord record = step_record(step, &control);
+          retry.step              = record;
+          result                  = retry;
+          scene.set_time(record.time);
+          report.start_step(record);
+          move_to_step_time();
+          if (scene.effects().contact)
+            contact_set.set_slip_origin(step_start_u,
+                                        scene.obstacle().displacement() -
+                                          previous_obstacle_displacement);
+        }
+      catch (...)
+        {
+          report.warning(step_failure(step, result.step.time) +
+                         "the solve failed.");
+          throw;
+        }
   }
 
   template <int dim>
   StepRecord
-  ContactProblem<dim>::step_record(const unsigned int step) const
+  ContactProblem<dim>::step_record(const unsigned int step,
+                                   const StepControl *control) const
   {
     StepRecord record;
-    record.step    = step;
-    record.n_steps = step_times.size();
-    record.time    = step_times[step - 1];
+    record.step      = step;
+    record.n_steps   = step_times.size();
+    record.time      = control ? control->next_time() : step_times.front();
+    record.listed    = control ? control->next_listed() : 1;
+    record.step_size = control ? control->next_step_size() : step_times.front();
+    record.cuts      = control ? control->cuts() : 0;
     return record;
   }
 
@@ -284,8 +381,11 @@ namespace dualcontact
     if (!probes.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       probes.append_step_csv(parameters.output.directory + "/probes_steps.csv");
-    if ((step.step - 1) % parameters.load_path.output_interval == 0 ||
-        step.step == step.n_steps)
+    // the fields at the listed times: every <Output interval>-th and the
+    // last (adaptive control's sub-steps in between have their rows only)
+    if (step.listed > 0 &&
+        ((step.listed - 1) % parameters.load_path.output_interval == 0 ||
+         step.listed == step.n_steps))
       output_step(step);
     report.end_step(result);
   }
@@ -580,11 +680,14 @@ namespace dualcontact
     SolveRecord record;
     held_by_friction_pressure = check_equilibrium();
 
-    // r is relative to (lambda + 2 mu) / h_C, so that the Uzawa steps do
-    // not depend on the units or on the mesh size; the P-wave modulus
-    // lambda + 2 mu rather than E, because it follows the stiffness of a
-    // nearly incompressible (locked) material, for which r_rel E / h_C is
-    // far too small (doc/theory.md §5).
+    // r is relative to (lambda + 2 mu) / h_k, so that the Uzawa steps do
+    // not depend on the units, the mesh size or the degree; the P-wave
+    // modulus lambda + 2 mu rather than E, because it follows the stiffness
+    // of a nearly incompressible (locked) material, for which r_rel E / h_k
+    // is far too small. h_k = h_C / k is the spacing of the contact nodes:
+    // at degree k the slowest multiplier mode lives on one node spacing, and
+    // r scaled with the faces alone slows the Uzawa rate with k
+    // (doc/theory.md §5).
     // The friction terms have their own r_t, scaled alike: by default r in
     // 2D and r / 4 in 3D, where friction terms as large as r make the Newton
     // matrices hard (doc/theory.md §5).
@@ -592,10 +695,11 @@ namespace dualcontact
       parameters.solver.tangential_augmentation > 0. ?
         parameters.solver.tangential_augmentation :
         (dim == 2 ? 1. : 0.25) * parameters.solver.augmentation;
-    const double modulus     = parameters.material.stiffest().p_wave_modulus();
-    const double h_C         = contact_set.min_face_diameter();
-    r                        = parameters.solver.augmentation * modulus / h_C;
-    r_t                      = r_t_rel * modulus / h_C;
+    const double modulus = parameters.material.stiffest().p_wave_modulus();
+    const double h_k =
+      contact_set.min_face_diameter() / parameters.discretization.degree;
+    r                        = parameters.solver.augmentation * modulus / h_k;
+    r_t                      = r_t_rel * modulus / h_k;
     record.r                 = r;
     record.r_t               = contact_set.friction ? r_t : 0.;
     record.chi               = chi;

@@ -665,7 +665,7 @@ namespace dualcontact
 
   template <int dim>
   void
-  Report<dim>::start_step(const unsigned int step, const double time)
+  Report<dim>::start_step(const StepRecord &step)
   {
     // memory flat along a long path: of the later steps' iterations, only
     // the last step's stay in memory (iterations.csv has all of them)
@@ -680,10 +680,38 @@ namespace dualcontact
         iteration_log.erase(first_later, written);
       }
     uzawa_header_shown = false;
-    if (shows(Verbosity::normal))
-      pcout << "Load step " << step << " of "
-            << parameters.load_path.n_steps_on_path() << ", t = " << time
+    if (!shows(Verbosity::normal))
+      return;
+    if (parameters.load_path.adaptive_steps)
+      pcout << "Load step " << step.step << ", t = " << step.time << " (size "
+            << step.step_size << ")\n";
+    else
+      pcout << "Load step " << step.step << " of "
+            << parameters.load_path.n_steps_on_path() << ", t = " << step.time
             << '\n';
+  }
+
+  template <int dim>
+  void
+  Report<dim>::cut_step(const StepRecord  &failed,
+                        const std::string &why,
+                        const double       retry_time)
+  {
+    // the failed try's iterations: the last ones, not yet written
+    iteration_log.resize(iterations_written);
+    const std::string  reason = Utilities::trim(why.substr(0, why.find('\n')));
+    std::ostringstream label;
+    label << "step " << std::setw(4) << failed.step << ": ";
+    pcout
+      << wrap(label.str(),
+              {"t = " + significant(failed.time, 6) + " failed (" + reason +
+                 ")",
+               "cut: again at t = " + significant(retry_time, 6) + " (size " +
+                 significant(retry_time - (failed.time - failed.step_size), 6) +
+                 ")"},
+              ", ",
+              "            ")
+      << std::flush;
   }
 
   template <int dim>

@@ -34,6 +34,7 @@
 #include <dualcontact/records.h>
 #include <dualcontact/report.h>
 #include <dualcontact/scene.h>
+#include <dualcontact/step_control.h>
 #include <dualcontact/step_predictor.h>
 #include <dualcontact/threshold_iteration.h>
 #include <dualcontact/uzawa_iteration.h>
@@ -113,17 +114,39 @@ namespace dualcontact
     solve_and_measure(CycleResult &result);
 
     /**
-     * The next step of the load path (2 .. n_steps): the scene at its time
-     * (loads, obstacle), the mesh (the same, or adapted with
-     * <Load path/Adapt at every step>), the state of the step before as
-     * the first guess, and the slip origin of the friction law.
+     * The next step of the load path (row `step` of steps.csv, 2, 3, ...),
+     * to the time `control` gives: the scene at its time (loads,
+     * obstacle), the mesh (the same, or adapted with <Load path/Adapt at
+     * every step>), the state of the step before as the first guess, and
+     * the slip origin of the friction law.
      */
     StepRecord
-    start_step(const unsigned int step, CycleResult &result);
+    start_step(const unsigned int step,
+               const StepControl &control,
+               CycleResult       &result);
 
-    /** Step `step` of the load path: its number, the count, its time. */
+    /**
+     * Solve and measure a later step. With adaptive <Load path/Step
+     * control> a solve that fails is tried again from the state the step
+     * started from, at the smaller size `control` gives, until it
+     * converges or the size would fall below the minimum step.
+     */
+    void
+    solve_step(StepControl &control, CycleResult &result);
+
+    /**
+     * The same mesh at the time of the step: the constraints, and the
+     * contact nodes at the obstacle's place.
+     */
+    void
+    move_to_step_time();
+
+    /**
+     * The step that `control` gives next: its row, the count of listed
+     * times, its time and size; the first step at the first listed time.
+     */
     StepRecord
-    step_record(const unsigned int step) const;
+    step_record(const unsigned int step, const StepControl *control) const;
 
     /**
      * A solved step of the load path: the energy dissipated up to it, the
@@ -316,9 +339,9 @@ namespace dualcontact
     /** The size of the solution now (ContactSystem::previous). */
     SolutionSize
     solution_size() const;
-    /** "At load step n of N (t = ...; ...): ", the head of its failure. */
+    /** "At load step n (t = ...; ...): ", the head of its failure. */
     std::string
-    step_failure(const unsigned int step) const;
+    step_failure(const unsigned int step, const double t) const;
     SolveRecord
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
     SolveRecord
@@ -442,6 +465,8 @@ namespace dualcontact
     double         dissipated = 0.;
     // the last two steps on this mesh, for the next step's start
     StepPredictor<dim> predictor;
+    // u^{n-1} on the step's mesh, where the slip of the step is counted from
+    TrilinosWrappers::MPI::Vector step_start_u;
     // the size of the previous step's solution (ContactSystem::previous)
     SolutionSize                  previous_size;
     TrilinosWrappers::MPI::Vector carried_v;

@@ -476,6 +476,8 @@ namespace dualcontact
     bool                adapt_at_every_step = false;
     unsigned int        output_interval     = 1;
     bool                predictor           = true;
+    bool                adaptive_steps      = false; // <Step control>
+    double              minimum_step        = 0.;    // 0: 'auto'
 
     /** The times of the steps, from the list or uniform. */
     std::vector<double>

@@ -180,9 +180,15 @@ namespace dualcontact
    */
   struct StepRecord
   {
-    unsigned int          step    = 1; // 1 .. n_steps
-    unsigned int          n_steps = 1;
-    double                time    = 1.;
+    unsigned int step    = 1; // the row of steps.csv: 1, 2, ...
+    unsigned int n_steps = 1; // the listed times
+    double       time    = 1.;
+    // which listed time the step reaches (1 .. n_steps), 0 for a sub-step
+    // of adaptive step control that ends short of it; with fixed control
+    // every step reaches one (listed = step)
+    unsigned int          listed    = 1;
+    double                step_size = 0.; // t - the time of the step before
+    unsigned int          cuts      = 0; // the failed tries before it converged
     std::array<double, 3> obstacle_displacement{}; // U(t)
     // the mean displacement of each loaded boundary part ('fixed',
     // 'traction'), by boundary id: with the reactions, the force-

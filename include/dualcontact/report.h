@@ -141,11 +141,21 @@ namespace dualcontact
     end_cycle(const CycleResult &result);
 
     /**
-     * A later step of the load path begins (2 .. n): at normal verbosity
-     * its line, above its Uzawa steps.
+     * A later step of the load path begins (or begins again, smaller): at
+     * normal verbosity its line, above its Uzawa steps.
      */
     void
-    start_step(const unsigned int step, const double time);
+    start_step(const StepRecord &step);
+
+    /**
+     * A later step's solve failed and adaptive step control tries it again
+     * at t = `retry_time`: a line at every verbosity with the reason (the
+     * first line of `why`); the failed try's iterations are dropped.
+     */
+    void
+    cut_step(const StepRecord  &failed,
+             const std::string &why,
+             const double       retry_time);
 
     /**
      * A step of the load path is done (the first one: the last cycle's

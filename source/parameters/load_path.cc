@@ -5,6 +5,7 @@
 #include <dualcontact/parameters.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace dualcontact
 {
@@ -69,6 +70,28 @@ namespace dualcontact
       "every later step starts from the last step's state. Only the cost "
       "differs: steps.csv's column predictor has the factor of the "
       "extrapolation (0: none), uzawa_steps what the step took.");
+    declarer.declare_entry(
+      "Step control",
+      "fixed",
+      EntryPattern::selection("fixed|adaptive"),
+      "fixed: each later step goes from one listed time to the next, and a "
+      "step whose solve fails (the Uzawa, Newton or threshold limit, CG, a "
+      "non-finite value) ends the run. adaptive: such a step is tried again "
+      "at half its size (or less), down to <Load path/Minimum step>, and "
+      "after two steps in a row that converged the size doubles again, up "
+      "to the listed step; no step goes past the next listed time, and the "
+      "fields are written at the listed times (<Load path/Output interval> "
+      "counts listed times). Each sub-step is a row of steps.csv (columns "
+      "step_size and cuts). A load the obstacle cannot hold ends the run "
+      "with exit 7 either way: a smaller step cannot help.");
+    declarer.declare_entry(
+      "Minimum step",
+      "auto",
+      EntryPattern::text(),
+      "The smallest step adaptive control tries [time]: 'auto' or a number "
+      "> 0. 'auto' is the shortest listed step after the first / 1024 (ten "
+      "halvings). A step that fails at this size ends the run. It must be "
+      "smaller than every listed step after the first.");
     declarer.leave_subsection();
   }
 
@@ -76,12 +99,24 @@ namespace dualcontact
   LoadPathParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Load path");
-    n_steps             = prm.get_integer("Number of steps");
-    end_time            = prm.get_double("End time");
-    times               = parse_doubles(prm.get("Times"));
-    adapt_at_every_step = prm.get_bool("Adapt at every step");
-    output_interval     = prm.get_integer("Output interval");
-    predictor           = prm.get_bool("Predictor");
+    n_steps                   = prm.get_integer("Number of steps");
+    end_time                  = prm.get_double("End time");
+    times                     = parse_doubles(prm.get("Times"));
+    adapt_at_every_step       = prm.get_bool("Adapt at every step");
+    output_interval           = prm.get_integer("Output interval");
+    predictor                 = prm.get_bool("Predictor");
+    adaptive_steps            = prm.get("Step control") == "adaptive";
+    const std::string minimum = Utilities::trim(prm.get("Minimum step"));
+    char             *end     = nullptr;
+    minimum_step              = std::strtod(minimum.c_str(), &end);
+    if (minimum == "auto")
+      minimum_step = 0.;
+    else if (minimum.empty() || *end != '\0' || !std::isfinite(minimum_step) ||
+             !(minimum_step > 0.))
+      throw InputError("The entry <Load path/Minimum step> must be 'auto' or "
+                       "a positive number, not '" +
+                         minimum + "'.",
+                       exit_invalid_value);
     prm.leave_subsection();
   }
 
@@ -111,6 +146,23 @@ namespace dualcontact
       throw InputError("The entry <Load path/End time> must be greater than "
                        "0.",
                        exit_invalid_value);
+    // a minimum step that no listed step exceeds could never cut that step
+    if (adaptive_steps && minimum_step > 0.)
+      {
+        const std::vector<double> t = step_times();
+        for (std::size_t n = 1; n < t.size(); ++n)
+          if (!(minimum_step < t[n] - t[n - 1]))
+            throw InputError(
+              "The entry <Load path/Minimum step> (" +
+                number_text(minimum_step) +
+                ") must be smaller than every listed step after the first, "
+                "but the step from t = " +
+                number_text(t[n - 1]) + " to " + number_text(t[n]) + " is " +
+                number_text(t[n] - t[n - 1]) +
+                ": adaptive <Load path/Step control> could not cut it. Set a "
+                "smaller minimum step, or 'auto'.",
+              exit_inconsistent);
+      }
   }
 
   std::vector<IneffectiveRule>
@@ -123,8 +175,16 @@ namespace dualcontact
              "<Load path/Times> gives the times"},
             {one_step,
              "Load path",
-             {"Adapt at every step", "Output interval", "Predictor"},
+             {"Adapt at every step",
+              "Output interval",
+              "Predictor",
+              "Step control",
+              "Minimum step"},
              "the path has one step"},
+            {!one_step && !adaptive_steps,
+             "Load path",
+             {"Minimum step"},
+             "<Load path/Step control> is fixed: no step is cut"},
             {!one_step && adapt_at_every_step,
              "Load path",
              {"Predictor"},

@@ -41,9 +41,10 @@ namespace dualcontact
       "10",
       EntryPattern::number(1e-3, 1e12),
       "r_rel [-], > 0: the augmentation parameter of the modified Lagrangian "
-      "is r = r_rel (lambda + 2 mu) / h_C [stress/length], with h_C the "
-      "smallest face diameter on the contact boundary and lambda + 2 mu the "
-      "P-wave modulus (E (1 - nu) / ((1 + nu) (1 - 2 nu)); 1.35 E at nu = "
+      "is r = r_rel (lambda + 2 mu) / h_k [stress/length], with h_k = h_C / "
+      "k the spacing of the contact nodes (h_C the smallest face diameter "
+      "on the contact boundary, k the polynomial degree) and lambda + 2 mu "
+      "the P-wave modulus (E (1 - nu) / ((1 + nu) (1 - 2 nu)); 1.35 E at nu = "
       "0.3), which follows the stiffness of nearly incompressible materials. "
       "Any r > 0 converges; larger r means fewer Uzawa steps and harder "
       "Newton problems (more Newton steps where many nodes slip), smaller r "
@@ -56,7 +57,7 @@ namespace dualcontact
       "auto",
       EntryPattern::text(),
       "r_t,rel [-]: 'auto' or a number > 0. The friction terms use their own "
-      "augmentation r_t = r_t,rel (lambda + 2 mu) / h_C [stress/length] (as "
+      "augmentation r_t = r_t,rel (lambda + 2 mu) / h_k [stress/length] (as "
       "r, with r_t,rel for r_rel), in the update l2 <- proj_g(l2 + r_t v_t) "
       "and in the Newton terms of l2. 'auto' is r_rel in 2D and r_rel / 4 in "
       "3D: in 3D, friction terms as large as the normal ones make the "

@@ -13,7 +13,10 @@ namespace dualcontact
     using namespace report_format;
 
     /**
-     * A load path of several steps: step, time; with contact predictor (the
+     * A load path of several steps: step, time; with adaptive <Load
+     * path/Step control> step_size, cuts (the failed tries before the step
+     * converged) and listed (which listed time it reaches, 0: a sub-step
+     * short of it); with contact predictor (the
      * factor of the extrapolation the step started from, 0: none); with
      * friction dissipation, dissipation_total; with an obstacle moved by
      * <Obstacle/Displacement> obstacle_displacement_x, _y (_z); the mean
@@ -37,6 +40,12 @@ namespace dualcontact
         static const char *axes[] = {"x", "y", "z"};
         t.add(4, "step", r.step.step);
         t.add(6, "time", r.step.time);
+        if (this->parameters.load_path.adaptive_steps)
+          {
+            t.add(7, "step_size", r.step.step_size);
+            t.add(8, "cuts", r.step.cuts);
+            t.add(9, "listed", r.step.listed);
+          }
         if (this->scene.effects().contact)
           t.add(152, "predictor", r.solve.predictor);
         if (this->scene.effects().contact &&

@@ -45,6 +45,26 @@ namespace
     return all;
   }
 
+  /**
+   * The last step's tractions of two runs on the same mesh, node by node:
+   * the largest difference of l1 or l2, and p0, the largest l1 of `b`.
+   */
+  std::pair<double, double>
+  traction_difference(const Run &a, const Run &b)
+  {
+    const auto ta = tractions(a), tb = tractions(b);
+    REQUIRE(ta.size() == tb.size());
+    double p0 = 0., difference = 0.;
+    for (std::size_t i = 0; i < ta.size(); ++i)
+      {
+        p0         = std::max(p0, tb[i][1]);
+        difference = std::max({difference,
+                               std::abs(ta[i][1] - tb[i][1]),
+                               std::abs(ta[i][2] - tb[i][2])});
+      }
+    return {difference, p0};
+  }
+
   /** The record of the last step (or of the last cycle of a static run). */
   const CycleResult &
   last_step(const Run &run)
@@ -693,21 +713,71 @@ TEST_CASE("The predictor changes the cost of the steps, not their answer: "
       uzawa_b += b[n].solve.uzawa_steps;
     }
   // the tractions of the last step, node by node, to 1e-6 F p0
-  const auto ta = tractions(predicted), tb = tractions(warm);
-  REQUIRE(ta.size() == tb.size());
-  double p0 = 0., difference = 0.;
-  for (std::size_t i = 0; i < ta.size(); ++i)
-    {
-      p0         = std::max(p0, tb[i][1]);
-      difference = std::max({difference,
-                             std::abs(ta[i][1] - tb[i][1]),
-                             std::abs(ta[i][2] - tb[i][2])});
-    }
-  const double F = 0.3;
+  const auto [difference, p0] = traction_difference(predicted, warm);
+  const double F              = 0.3;
   INFO("largest traction difference "
        << difference << ", F p0 " << F * p0 << "; Uzawa steps " << uzawa_a
        << " with the predictor, " << uzawa_b << " without");
   CHECK(difference <= 1e-6 * F * p0);
   // it saves Uzawa steps (one in seven on the extrapolated shear steps)
   CHECK(uzawa_a < uzawa_b);
+}
+
+TEST_CASE("Adaptive step control: a step that fails at full size is cut "
+          "until it converges, and the path ends where the same steps, "
+          "fixed, end",
+          "[path]")
+{
+  // the cylinder pressed to a quarter of its load, then pressed fully and
+  // sheared in one step, with a Newton limit (4) that the large step
+  // exceeds in its first Uzawa step and the smaller ones do not
+  const std::string scene =
+    "subsection Refinement\n  set Number of cycles = 1\nend\n"
+    "subsection Solver\n  set Maximum Newton steps = 4\nend\n"
+    "subsection Load path\n  set Times = 0.25, 2\n";
+  CHECK_THROWS_AS(Run("cattaneo_mindlin.prm", scene + "end\n"),
+                  dealii::ExceptionBase);
+
+  const Run                       adaptive("cattaneo_mindlin.prm",
+                     scene + "  set Step control = adaptive\nend\n");
+  const std::vector<CycleResult> &a = adaptive.problem->steps();
+  REQUIRE(a.size() > 2);
+  // the step to t = 2 was cut, the sub-steps reach t = 2 exactly, and
+  // each follows the one before
+  unsigned int cuts = 0;
+  for (std::size_t n = 1; n < a.size(); ++n)
+    {
+      INFO("step " << n + 1 << " at t = " << a[n].step.time);
+      cuts += a[n].step.cuts;
+      CHECK(std::abs(a[n].step.time - a[n - 1].step.time -
+                     a[n].step.step_size) <= 1e-14);
+      CHECK(a[n].step.listed == (n + 1 == a.size() ? 2u : 0u));
+      CHECK(a[n].step.step_size <= 1.75 / 2.);
+    }
+  CHECK(cuts >= 1);
+  CHECK(a[1].step.cuts >= 1);
+  CHECK(a.back().step.time == 2.);
+
+  // the same times as fixed steps: the same final state, to the Uzawa
+  // tolerance (tractions to 1e-6 F p0, the same stick and slip nodes)
+  std::ostringstream list;
+  list << std::setprecision(17);
+  for (const CycleResult &r : a)
+    list << (&r == &a.front() ? "" : ", ") << r.step.time;
+  const std::string               times = list.str();
+  const Run                       fixed("cattaneo_mindlin.prm",
+                  "subsection Refinement\n  set Number of cycles = 1\nend\n"
+                                        "subsection Solver\n  set Maximum Newton steps = 4\nend\n"
+                                        "subsection Load path\n  set Times = " +
+                    times + "\nend\n");
+  const std::vector<CycleResult> &b = fixed.problem->steps();
+  REQUIRE(b.size() == a.size());
+  CHECK(a.back().solve.n_stick == b.back().solve.n_stick);
+  CHECK(a.back().solve.n_slip == b.back().solve.n_slip);
+  CHECK(a.back().step.dissipation_total ==
+        Approx(b.back().step.dissipation_total).epsilon(1e-6));
+  const auto [difference, p0] = traction_difference(adaptive, fixed);
+  INFO("times " << times << "; largest traction difference " << difference
+                << ", F p0 " << 0.3 * p0);
+  CHECK(difference <= 1e-6 * 0.3 * p0);
 }

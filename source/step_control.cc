@@ -1,0 +1,101 @@
+// The times of a load path's later steps (step_control.h).
+#include <dualcontact/step_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace dualcontact
+{
+  StepControl::StepControl(const std::vector<double> &listed_times,
+                           const LoadPathParameters  &parameters)
+      : times(listed_times)
+      , adaptive(parameters.adaptive_steps)
+      , min_step(minimum_step(listed_times, parameters))
+      , time(listed_times.front())
+  {}
+
+  double
+  StepControl::minimum_step(const std::vector<double> &listed_times,
+                            const LoadPathParameters  &parameters)
+  {
+    if (parameters.minimum_step > 0.)
+      return parameters.minimum_step;
+    double shortest = std::numeric_limits<double>::max();
+    for (std::size_t i = 1; i < listed_times.size(); ++i)
+      shortest = std::min(shortest, listed_times[i] - listed_times[i - 1]);
+    return listed_times.size() > 1 ? shortest / 1024. : 0.;
+  }
+
+  bool
+  StepControl::finished() const
+  {
+    return next >= times.size();
+  }
+
+  double
+  StepControl::interval() const
+  {
+    return times[next] - times[next - 1];
+  }
+
+  double
+  StepControl::target_time() const
+  {
+    return times[next];
+  }
+
+  double
+  StepControl::next_time() const
+  {
+    const double size = std::ldexp(interval(), -static_cast<int>(level));
+    // a step that would end at (or within round-off of) the listed time, or
+    // beyond it, ends there: the listed times are reached exactly
+    if (time + size >= times[next] - 1e-12 * interval())
+      return times[next];
+    return time + size;
+  }
+
+  double
+  StepControl::next_step_size() const
+  {
+    return next_time() - time;
+  }
+
+  unsigned int
+  StepControl::next_listed() const
+  {
+    return next_time() == times[next] ? next + 1 : 0;
+  }
+
+  void
+  StepControl::accept()
+  {
+    const double reached = next_time();
+    if (reached == times[next])
+      ++next;
+    time   = reached;
+    n_cuts = 0;
+    if (adaptive && ++converged == 2 && level > 0)
+      {
+        --level;
+        converged = 0;
+      }
+    if (converged >= 2)
+      converged = 0;
+  }
+
+  bool
+  StepControl::cut()
+  {
+    // half the size that failed, also where it was the rest of an interval
+    const double half = next_step_size() / 2.;
+    if (!adaptive || half < min_step)
+      return false;
+    while (std::ldexp(interval(), -static_cast<int>(level)) > half)
+      ++level;
+    ++n_cuts;
+    converged = 0;
+    return true;
+  }
+} // namespace dualcontact
