@@ -402,8 +402,10 @@ namespace Step8
     {
       const Path &c = variants[2];
       pcout << "  (c) step by step:       t";
+      // (a space before each: the sub-steps of adaptive step control have
+      // times of more digits)
       for (const CycleResult &r : c.steps)
-        pcout << format("%7g", r.step.time);
+        pcout << format(" %6.4g", r.step.time);
       pcout << "\n                 slip nodes";
       for (const CycleResult &r : c.steps)
         pcout << format("%7.0f", double(r.solve.n_slip));
