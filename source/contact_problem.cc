@@ -215,6 +215,7 @@ namespace dualcontact
                             locally_relevant_dofs,
                             mpi_communicator);
         step_start_u = carried_v;
+        step_before_u.clear();
       }
     else
       {
@@ -225,6 +226,20 @@ namespace dualcontact
         carried_v                  = solution;
         carried                    = true;
         result.transfer.warm_start = true;
+        // u^{n-2}: the step before's start, or the undeformed body at t = 0
+        if (step == 2 || step_start_u.size() != solution.size())
+          {
+            step_before_u.reinit(locally_owned_dofs,
+                                 locally_relevant_dofs,
+                                 mpi_communicator);
+            step_before_time = 0.;
+          }
+        else
+          {
+            step_before_u    = step_start_u;
+            step_before_time = report.steps().back().step.time -
+                               report.steps().back().step.step_size;
+          }
         step_start_u.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
                             mpi_communicator);
@@ -232,11 +247,37 @@ namespace dualcontact
         same_stiffness = true;
       }
     carried_from_step = true;
-    if (scene.effects().contact)
-      contact_set.set_slip_origin(step_start_u,
-                                  scene.obstacle().displacement() -
-                                    previous_obstacle_displacement);
+    set_slip_origins(record);
     return record;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::set_slip_origins(const StepRecord &step)
+  {
+    if (!scene.effects().contact)
+      return;
+    const Tensor<1, dim> obstacle_step =
+      scene.obstacle().displacement() - previous_obstacle_displacement;
+    contact_set.set_slip_origin(step_start_u, obstacle_step);
+    // the free motion of the step, u^{n-1} + (t - t_{n-1}) (u^{n-1} -
+    // u^{n-2}) / (t_{n-1} - t_{n-2}): where it closes a node's gap, the node
+    // touches during the step, and its slip counts from there
+    const double t_start = step.time - step.step_size;
+    if (step_before_u.size() == 0 || obstacle_step.norm() > 0. ||
+        !(t_start > step_before_time))
+      return;
+    const double factor = step.step_size / (t_start - step_before_time);
+    TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector before(locally_owned_dofs, mpi_communicator);
+    owned  = step_start_u;
+    before = step_before_u;
+    owned.sadd(1. + factor, -factor, before);
+    TrilinosWrappers::MPI::Vector u_free(locally_owned_dofs,
+                                         locally_relevant_dofs,
+                                         mpi_communicator);
+    u_free = owned;
+    contact_set.set_touch_origin(step_start_u, u_free);
   }
 
   template <int dim>
@@ -323,10 +364,7 @@ namespace dualcontact
           scene.set_time(record.time);
           report.start_step(record);
           move_to_step_time();
-          if (scene.effects().contact)
-            contact_set.set_slip_origin(step_start_u,
-                                        scene.obstacle().displacement() -
-                                          previous_obstacle_displacement);
+          set_slip_origins(record);
         }
       catch (...)
         {

@@ -264,6 +264,38 @@ namespace dualcontact
   }
 
   template <int dim>
+  void
+  ContactSet<dim>::set_touch_origin(const TrilinosWrappers::MPI::Vector &u,
+                                    const TrilinosWrappers::MPI::Vector &u_free)
+  {
+    // the previous step's gaps and tangential positions first: with pairs,
+    // with_masters() reuses one buffer
+    std::vector<double>             gap_before(nodes.size());
+    std::vector<Tensor<1, dim - 1>> t_before(nodes.size());
+    {
+      const TrilinosWrappers::MPI::Vector &w = with_masters(u);
+      for (unsigned int s = 0; s < nodes.size(); ++s)
+        {
+          gap_before[s] = nodes[s].gap0 - normal_displacement(w, s);
+          t_before[s]   = tangential_displacement(w, s);
+        }
+    }
+    const TrilinosWrappers::MPI::Vector &w = with_masters(u_free);
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      {
+        if (l1[s] > 0. || !(gap_before[s] > 0.))
+          continue;
+        const double gap_free = nodes[s].gap0 - normal_displacement(w, s);
+        if (!(gap_free < gap_before[s]))
+          continue; // moving away: it touches, if at all, by the others' motion
+        const double theta =
+          gap_free < 0. ? gap_before[s] / (gap_before[s] - gap_free) : 1.;
+        slip_origin[s] =
+          (1. - theta) * t_before[s] + theta * tangential_displacement(w, s);
+      }
+  }
+
+  template <int dim>
   std::pair<Tensor<1, dim>, std::array<Tensor<1, dim>, dim - 1>>
   ContactSet<dim>::basis_at(const Point<dim> &x) const
   {

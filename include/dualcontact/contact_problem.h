@@ -142,6 +142,14 @@ namespace dualcontact
     move_to_step_time();
 
     /**
+     * The slip origin of the step to `step` (doc/theory.md §11): u^{n-1}
+     * at the nodes in contact, the point where the gap closes at those that
+     * touch during the step.
+     */
+    void
+    set_slip_origins(const StepRecord &step);
+
+    /**
      * The step that `control` gives next: its row, the count of listed
      * times, its time and size; the first step at the first listed time.
      */
@@ -465,8 +473,11 @@ namespace dualcontact
     double         dissipated = 0.;
     // the last two steps on this mesh, for the next step's start
     StepPredictor<dim> predictor;
-    // u^{n-1} on the step's mesh, where the slip of the step is counted from
-    TrilinosWrappers::MPI::Vector step_start_u;
+    // u^{n-1} on the step's mesh, where the slip of the step is counted from,
+    // and u^{n-2} (0 before the second step), for the free motion of the
+    // nodes that touch during a step; empty on a mesh adapted for the step
+    TrilinosWrappers::MPI::Vector step_start_u, step_before_u;
+    double                        step_before_time = 0.;
     // the size of the previous step's solution (ContactSystem::previous)
     SolutionSize                  previous_size;
     TrilinosWrappers::MPI::Vector carried_v;

@@ -204,6 +204,17 @@ namespace dualcontact
                     const Tensor<1, dim>                &obstacle_step);
 
     /**
+     * The slip origin of the nodes that were apart at the end of the
+     * previous step (l1 = 0, gap > 0) and whose free motion u_free over the
+     * step (ghosted) closes their gap: their position at the time the gap
+     * closes, interpolated between u (the previous step's) and u_free
+     * (doc/theory.md §11). Call after set_slip_origin(); the obstacle still.
+     */
+    void
+    set_touch_origin(const TrilinosWrappers::MPI::Vector &u,
+                     const TrilinosWrappers::MPI::Vector &u_free);
+
+    /**
      * The gaps g0_s, normals and tangents of the nodes, and the direction of
      * first contact, for the obstacle where the scene has it now (setup()
      * calls it; a load step that moves the obstacle calls it again). The

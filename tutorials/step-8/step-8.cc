@@ -383,8 +383,12 @@ namespace Step8
     std::vector<double> off_variant;
     off_variant.push_back(
       variant_row("  (a) at once                 ", variants[0], 0, false));
-    off_variant.push_back(
-      variant_row("  (b) normal first, then shear", variants[1], 1, false));
+    // (b)'s last step (its second, or the last sub-step of a shear that
+    // adaptive step control cut)
+    off_variant.push_back(variant_row("  (b) normal first, then shear",
+                                      variants[1],
+                                      variants[1].steps.size() - 1,
+                                      false));
     variant_row("  (c) in proportion           ",
                 variants[2],
                 variants[2].steps.size() - 1,
