@@ -15,6 +15,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -29,6 +30,23 @@ namespace dualcontact
   parse_doubles(const std::string &text)
   {
     return Utilities::string_to_double(Utilities::split_string_list(text, ','));
+  }
+
+  double
+  parse_auto_or_positive(const std::string &text, const std::string &entry)
+  {
+    const std::string value = dealii::Utilities::trim(text);
+    if (value == "auto")
+      return 0.;
+    char        *end    = nullptr;
+    const double number = std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !std::isfinite(number) ||
+        !(number > 0.))
+      throw InputError("The entry <" + entry +
+                         "> must be 'auto' or a positive number, not '" +
+                         value + "'.",
+                       exit_invalid_value);
+    return number;
   }
 
   std::string

@@ -12,6 +12,14 @@ namespace dualcontact
   std::vector<double>
   parse_doubles(const std::string &text);
 
+  /**
+   * The value of an entry that takes 'auto' or a number > 0: 0 for 'auto',
+   * else the number; InputError (exit 5) otherwise: "The entry <entry> must
+   * be 'auto' or a positive number, not 'value'."
+   */
+  double
+  parse_auto_or_positive(const std::string &value, const std::string &entry);
+
   /** A number as the user would write it (0, -1, 2.5). */
   std::string
   number_text(const double x);

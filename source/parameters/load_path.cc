@@ -5,7 +5,6 @@
 #include <dualcontact/parameters.h>
 
 #include <cmath>
-#include <cstdlib>
 
 namespace dualcontact
 {
@@ -82,8 +81,8 @@ namespace dualcontact
       "to the listed step; no step goes past the next listed time, and the "
       "fields are written at the listed times (<Load path/Output interval> "
       "counts listed times). Each sub-step is a row of steps.csv (columns "
-      "step_size and cuts). A load the obstacle cannot hold ends the run "
-      "with exit 7 either way: a smaller step cannot help.");
+      "step_size, cuts and listed). A load the obstacle cannot hold ends "
+      "the run with exit 7 either way: a smaller step cannot help.");
     declarer.declare_entry(
       "Minimum step",
       "auto",
@@ -99,24 +98,15 @@ namespace dualcontact
   LoadPathParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Load path");
-    n_steps                   = prm.get_integer("Number of steps");
-    end_time                  = prm.get_double("End time");
-    times                     = parse_doubles(prm.get("Times"));
-    adapt_at_every_step       = prm.get_bool("Adapt at every step");
-    output_interval           = prm.get_integer("Output interval");
-    predictor                 = prm.get_bool("Predictor");
-    adaptive_steps            = prm.get("Step control") == "adaptive";
-    const std::string minimum = Utilities::trim(prm.get("Minimum step"));
-    char             *end     = nullptr;
-    minimum_step              = std::strtod(minimum.c_str(), &end);
-    if (minimum == "auto")
-      minimum_step = 0.;
-    else if (minimum.empty() || *end != '\0' || !std::isfinite(minimum_step) ||
-             !(minimum_step > 0.))
-      throw InputError("The entry <Load path/Minimum step> must be 'auto' or "
-                       "a positive number, not '" +
-                         minimum + "'.",
-                       exit_invalid_value);
+    n_steps             = prm.get_integer("Number of steps");
+    end_time            = prm.get_double("End time");
+    times               = parse_doubles(prm.get("Times"));
+    adapt_at_every_step = prm.get_bool("Adapt at every step");
+    output_interval     = prm.get_integer("Output interval");
+    predictor           = prm.get_bool("Predictor");
+    adaptive_steps      = prm.get("Step control") == "adaptive";
+    minimum_step =
+      parse_auto_or_positive(prm.get("Minimum step"), "Load path/Minimum step");
     prm.leave_subsection();
   }
 

@@ -165,23 +165,10 @@ namespace dualcontact
     max_linear_iterations = prm.get_integer("Maximum linear iterations");
     amg_rotation_modes    = prm.get_bool("AMG with rotation modes");
     augmentation          = prm.get_double("Augmentation parameter");
-    {
-      const std::string value =
-        Utilities::trim(prm.get("Tangential augmentation parameter"));
-      char *end               = nullptr;
-      tangential_augmentation = std::strtod(value.c_str(), &end);
-      const bool number       = !value.empty() && *end == '\0' &&
-                          std::isfinite(tangential_augmentation) &&
-                          tangential_augmentation > 0.;
-      if (value == "auto")
-        tangential_augmentation = 0.; // resolved per dimension
-      else if (!number)
-        throw InputError("The entry <Solver/Tangential augmentation "
-                         "parameter> must be 'auto' or a positive number, "
-                         "not '" +
-                           value + "'.",
-                         exit_invalid_value);
-    }
+    // 'auto' (0) is resolved per dimension
+    tangential_augmentation =
+      parse_auto_or_positive(prm.get("Tangential augmentation parameter"),
+                             "Solver/Tangential augmentation parameter");
     proximal                   = prm.get_double("Proximal parameter");
     uzawa_tolerance            = prm.get_double("Uzawa tolerance");
     max_uzawa_steps            = prm.get_integer("Maximum Uzawa steps");
