@@ -92,43 +92,60 @@ namespace dualcontact
     const OutputDirectory output(parameters.output.directory, mpi_communicator);
     try
       {
-        make_grid(); // checks the input first: nothing is written before
-        report.print_scene();
-
-        // the first step of the load path, on every mesh
-        CycleResult result;
-        for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
-             ++cycle)
+        CycleResult  result;
+        StepControl  control(step_times, parameters.load_path);
+        unsigned int step = 2;
+        if (resume)
           {
-            if (cycle > 0)
-              refine_mesh();
+            // the path from where a checkpoint left it (checked first:
+            // nothing is printed before)
+            step = load_checkpoint(control) + 1;
+            report.print_scene();
+            report.print_resume();
+          }
+        else
+          {
+            make_grid(); // checks the input first: nothing is written before
+            report.print_scene();
 
-            result          = CycleResult();
-            result.step     = step_record(1, nullptr);
-            result.mesh     = setup_system(cycle);
-            result.transfer = transfer_fields();
-            report.start_cycle(result.mesh, result.transfer);
+            // the first step of the load path, on every mesh
+            for (unsigned int cycle = 0; cycle < parameters.refinement.n_cycles;
+                 ++cycle)
+              {
+                if (cycle > 0)
+                  refine_mesh();
 
-            solve_and_measure(result);
-            if (scene.effects().contact)
-              result.cold = compare_with_cold_start();
+                result          = CycleResult();
+                result.step     = step_record(1, nullptr);
+                result.mesh     = setup_system(cycle);
+                result.transfer = transfer_fields();
+                report.start_cycle(result.mesh, result.transfer);
 
-            output_results(cycle);
-            result = report.end_cycle(result); // with its times
+                solve_and_measure(result);
+                if (scene.effects().contact)
+                  result.cold = compare_with_cold_start();
+
+                output_results(cycle);
+                result = report.end_cycle(result); // with its times
+              }
+            path_mesh = result.mesh;
+            if (step_times.size() > 1)
+              finish_step(result);
           }
 
         // the later steps, each from the state the step before reached
         // (doc/theory.md §11), at the times step control gives
-        if (step_times.size() > 1)
-          finish_step(result);
-        StepControl control(step_times, parameters.load_path);
-        for (unsigned int step = 2; !control.finished(); ++step)
+        const unsigned int checkpoints = parameters.output.checkpoint_interval;
+        for (; !control.finished(); ++step)
           {
             result      = CycleResult();
             result.step = start_step(step, control, result);
             solve_step(control, result);
             finish_step(result);
             control.accept();
+            if (checkpoints > 0 && step % checkpoints == 0 &&
+                !control.finished())
+              write_checkpoint(result.step, control);
           }
         report.finish();
       }
@@ -209,8 +226,9 @@ namespace dualcontact
         // v, the multipliers and the threshold go with the cells; u^{n-1}
         // is the carried v
         refine_mesh();
-        result.mesh     = setup_system(report.cycles().size());
+        result.mesh     = setup_system(parameters.refinement.n_cycles);
         result.transfer = transfer_fields();
+        path_mesh       = result.mesh;
         step_start_u.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
                             mpi_communicator);
@@ -220,7 +238,7 @@ namespace dualcontact
     else
       {
         // the same mesh: the multipliers as they are
-        result.mesh = report.cycles().back().mesh;
+        result.mesh = path_mesh;
         move_to_step_time();
         carried_v.reinit(locally_owned_dofs, mpi_communicator);
         carried_v                  = solution;
@@ -237,15 +255,15 @@ namespace dualcontact
         else
           {
             step_before_u    = step_start_u;
-            step_before_time = report.steps().back().step.time -
-                               report.steps().back().step.step_size;
+            step_before_time = last_step_start;
           }
         step_start_u.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
                             mpi_communicator);
         step_start_u   = solution;
-        same_stiffness = true;
+        same_stiffness = !at_a_checkpoint;
       }
+    at_a_checkpoint   = false;
     carried_from_step = true;
     set_slip_origins(record);
     return record;
@@ -399,6 +417,7 @@ namespace dualcontact
                          system_rhs,
                          scene.obstacle().displacement());
     dissipated             = result.step.dissipation_total;
+    last_step_start        = result.step.time - result.step.step_size;
     const Tensor<1, dim> U = scene.obstacle().displacement();
     for (unsigned int c = 0; c < dim; ++c)
       result.step.obstacle_displacement[c] = U[c];
@@ -460,6 +479,14 @@ namespace dualcontact
                 << std::endl;
     scene.check_rigid_motions(triangulation);
     check_initial_position(triangulation, scene);
+    // a checkpoint keeps the mesh as p4est's forest
+    if (parameters.output.checkpoint_interval > 0 && step_times.size() > 1 &&
+        scene.cell_kind() == CellKind::simplex)
+      throw InputError(
+        "<Output/Checkpoint interval> needs a mesh of quadrilaterals or "
+        "hexahedra (a checkpoint keeps p4est's forest); this scene's mesh is "
+        "of triangles or tetrahedra: set it to 0.",
+        exit_inconsistent);
     // every cell has a material: once <Material/Materials by id> lists
     // some, a cell of an id it does not name (and not 0) is bad input
     types::material_id missing = 0;

@@ -326,7 +326,8 @@ namespace dualcontact
   std::pair<double, double>
   ContactSet<dim>::read_fields(
     const TrilinosWrappers::MPI::Vector &multipliers,
-    const TrilinosWrappers::MPI::Vector &threshold_field)
+    const TrilinosWrappers::MPI::Vector &threshold_field,
+    const bool                           project)
   {
     double smallest_l1 = std::numeric_limits<double>::max();
     double excess      = -std::numeric_limits<double>::max();
@@ -334,17 +335,19 @@ namespace dualcontact
       {
         const double raw = multipliers[nodes[s].dofs[0]];
         smallest_l1      = std::min(smallest_l1, raw);
-        l1[s]            = std::max(raw, 0.);
+        l1[s]            = project ? std::max(raw, 0.) : raw;
         if (!friction)
           continue;
         if (law->depends_on_pressure())
-          threshold[s] = std::max(threshold_field[nodes[s].dofs[0]], 0.);
+          threshold[s] = project ?
+                           std::max(threshold_field[nodes[s].dofs[0]], 0.) :
+                           threshold_field[nodes[s].dofs[0]];
         Tensor<1, dim - 1> t;
         for (unsigned int k = 0; k < dim - 1; ++k)
           t[k] = multipliers[nodes[s].dofs[k + 1]];
         const double norm = t.norm();
         excess            = std::max(excess, norm - threshold[s]);
-        l2[s]             = norm > threshold[s] ? t * (threshold[s] / norm) : t;
+        l2[s] = project && norm > threshold[s] ? t * (threshold[s] / norm) : t;
       }
     return {smallest_l1, excess};
   }

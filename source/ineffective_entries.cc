@@ -25,7 +25,8 @@ namespace dualcontact
           solver.ineffective_rules(*this),
           refinement.ineffective_rules(*this),
           exact.ineffective_rules(*this),
-          load_path.ineffective_rules(*this)})
+          load_path.ineffective_rules(*this),
+          output.ineffective_rules(*this)})
       rules.insert(rules.end(), more.begin(), more.end());
 
     // in the order the input gives the entries: by file, then line (the

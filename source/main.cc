@@ -35,12 +35,14 @@ namespace
    */
   template <int dim>
   void
-  run_scene(const dualcontact::Parameters &parameters)
+  run_scene(const dualcontact::Parameters &parameters, const bool resume)
   {
     std::exception_ptr error;
     {
       dualcontact::ContactProblem<dim> problem(parameters);
       problem.record_parameters(parameters.parameter_file);
+      if (resume)
+        problem.continue_from_checkpoint();
       try
         {
           problem.run();
@@ -60,6 +62,7 @@ namespace
     bool                     print_parameters = false;
     std::vector<std::string> scenes;
     std::vector<std::string> overrides;
+    std::string              resume; // the folder of the checkpoint
   };
 
   po::options_description
@@ -74,7 +77,13 @@ namespace
       "set",
       po::value<std::vector<std::string>>()->composing(),
       "\"Subsection/Entry=value\": override one entry of the scene (after the "
-      "file; repeat for several), e.g. --set \"Friction/Coefficient=0.4\"");
+      "file; repeat for several), e.g. --set \"Friction/Coefficient=0.4\"")(
+      "resume",
+      po::value<std::string>(),
+      "folder: go on with the load path from the last checkpoint in this "
+      "output folder (<Output/Checkpoint interval>), which becomes "
+      "<Output/Directory>; the scene and its --set must be those of the run "
+      "that wrote it, on as many MPI ranks");
     return options;
   }
 
@@ -84,6 +93,7 @@ namespace
     std::ostringstream text;
     text
       << "Usage: dualcontact [--set \"Subsection/Entry=value\" ...] scene.prm\n"
+         "       dualcontact [--set ...] scene.prm --resume output/\n"
          "       dualcontact --print-parameters [scene.prm [--set ...]]\n"
          "       dualcontact --help\n"
          "\n"
@@ -133,6 +143,8 @@ namespace
       line.scenes = values["scene"].as<std::vector<std::string>>();
     if (values.count("set"))
       line.overrides = values["set"].as<std::vector<std::string>>();
+    if (values.count("resume"))
+      line.resume = values["resume"].as<std::string>();
     const bool needs_scene = !line.help && !line.print_parameters;
     if ((needs_scene && line.scenes.size() != 1) || line.scenes.size() > 1 ||
         (line.scenes.empty() && !line.overrides.empty()))
@@ -179,10 +191,14 @@ main(int argc, char *argv[])
           std::cerr << "dualcontact: warning: " << printable(warning)
                     << std::endl;
 
+      // a resumed run writes where the checkpoint is
+      const bool resume = !line.resume.empty();
+      if (resume)
+        parameters.output.directory = line.resume;
       if (parameters.geometry.dimension == 2)
-        run_scene<2>(parameters);
+        run_scene<2>(parameters, resume);
       else
-        run_scene<3>(parameters);
+        run_scene<3>(parameters, resume);
     }
   catch (const InputError &error)
     {

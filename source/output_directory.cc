@@ -85,6 +85,13 @@ namespace dualcontact
     unsigned int removed = 0;
     for (const std::filesystem::path &file : old)
       removed += std::filesystem::remove(file, error) ? 1 : 0;
+    // an earlier run's checkpoint (checkpoint.h), and one it did not finish
+    for (const char *folder : {"checkpoint", "checkpoint.new"})
+      removed +=
+        std::filesystem::remove_all(std::filesystem::path(directory) / folder,
+                                    error) > 0 ?
+          1 :
+          0;
     return removed;
   }
 } // namespace dualcontact

@@ -8,6 +8,7 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/probes.h>
+#include <dualcontact/report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -435,8 +436,9 @@ namespace dualcontact
   Probes<dim>::append_step_csv(const std::string &filename)
   {
     std::ofstream csv;
-    if (step_values_written == 0)
+    if (!step_csv_started)
       {
+        step_csv_started = true;
         csv.open(filename, std::ios::trunc);
         csv << "step,time,";
         write_header(csv);
@@ -450,6 +452,15 @@ namespace dualcontact
         csv << v.step << ',' << v.time << ',';
         write_row(csv, v);
       }
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::resume_step_csv(const std::string &filename,
+                               const unsigned int last_step)
+  {
+    keep_rows_up_to(filename, "step", last_step);
+    step_csv_started = true;
   }
 
   template class Probes<2>;

@@ -370,8 +370,8 @@ namespace dualcontact
   Report<dim>::newton_step(const IterationRecord &record)
   {
     iteration_log.push_back(record);
-    iteration_log.back().cycle = cycle_results.size();
-    iteration_log.back().step  = step_results.size() + 1;
+    iteration_log.back().cycle = cycles_before + cycle_results.size();
+    iteration_log.back().step  = steps_before + step_results.size() + 1;
     if (!shows(Verbosity::detailed))
       return;
     // the last record of a proximal step is the test that ended it: no
@@ -430,8 +430,8 @@ namespace dualcontact
                           const bool             merged)
   {
     iteration_log.push_back(record);
-    iteration_log.back().cycle = cycle_results.size();
-    iteration_log.back().step  = step_results.size() + 1;
+    iteration_log.back().cycle = cycles_before + cycle_results.size();
+    iteration_log.back().step  = steps_before + step_results.size() + 1;
     if (!shows(Verbosity::normal))
       return;
     print_uzawa_header(record.uzawa_step);
@@ -448,8 +448,8 @@ namespace dualcontact
   Report<dim>::threshold_step(const IterationRecord &record)
   {
     iteration_log.push_back(record);
-    iteration_log.back().cycle = cycle_results.size();
-    iteration_log.back().step  = step_results.size() + 1;
+    iteration_log.back().cycle = cycles_before + cycle_results.size();
+    iteration_log.back().step  = steps_before + step_results.size() + 1;
     if (!shows(Verbosity::normal))
       return;
     std::ostringstream label;
@@ -634,7 +634,8 @@ namespace dualcontact
     const std::vector<CycleResult> &before =
       step_results.empty() ? cycle_results : step_results;
     result.time.total =
-      (before.empty() ? 0. : before.back().time.total) + result.time.cycle;
+      (before.empty() ? total_before : before.back().time.total) +
+      result.time.cycle;
     result.time.elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
@@ -768,7 +769,7 @@ namespace dualcontact
         TableEntries csv;
         for (const auto &quantity : quantities)
           quantity->csv_entries(result, csv);
-        if (step_results.size() == 1)
+        if (result.step.step == 1)
           steps_file.open(parameters.output.directory + "/steps.csv");
         steps_file.add_rows({csv.csv_row()});
         if (scene.effects().contact)
@@ -784,11 +785,70 @@ namespace dualcontact
 
   template <int dim>
   void
+  Report<dim>::resume(const unsigned int last_step,
+                      const double       time,
+                      const double       total_time,
+                      const std::string &loop_figure_state)
+  {
+    steps_before  = last_step;
+    cycles_before = parameters.refinement.n_cycles;
+    total_before  = total_time;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        const std::string &directory = parameters.output.directory;
+        steps_file.resume(directory + "/steps.csv", last_step);
+        if (scene.effects().contact)
+          {
+            iterations_file.resume(directory + "/iterations.csv", last_step);
+            loop_figure->load(loop_figure_state);
+          }
+      }
+    iterations_file_started = true;
+    // the first step's times from here: not the time the loading took
+    previous_totals = timer.get_summary_data(TimerOutput::total_wall_time);
+    resumed_time    = time;
+  }
+
+  template <int dim>
+  void
+  Report<dim>::print_resume() const
+  {
+    pcout << "Resumed from the checkpoint at load step " << steps_before
+          << ", t = " << resumed_time
+          << " (the files of the steps up to it are kept, later ones written "
+             "again)\n";
+  }
+
+  template <int dim>
+  double
+  Report<dim>::total_time() const
+  {
+    return step_results.empty() ? total_before : step_results.back().time.total;
+  }
+
+  template <int dim>
+  std::string
+  Report<dim>::loop_figure_state() const
+  {
+    return loop_figure->state();
+  }
+
+  template <int dim>
+  void
   Report<dim>::finish() const
   {
     // an error's order, dim log(e_{k-1}/e_k) / log(N_k/N_{k-1}) (dim times
     // the rate per DoF): the order in h for uniform refinement, and still
     // meaningful for adaptive meshes
+    if (cycle_results.empty())
+      {
+        // a run resumed from a checkpoint: its cycles were the stopped
+        // run's (cycles.csv)
+        pcout << "Output written to " << parameters.output.directory << "/\n";
+        if (parameters.output.print_timing)
+          timer.print_summary();
+        return;
+      }
     ConvergenceTable table = screen_table;
     for (const auto &quantity : quantities)
       quantity->format_summary(table);

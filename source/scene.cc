@@ -821,6 +821,16 @@ namespace dualcontact
     parallel::TriangulationBase<dim>  &triangulation,
     const std::function<void(double)> &before_refining) const
   {
+    create_coarse_mesh(triangulation, before_refining);
+    refine_initial_mesh(triangulation, before_refining);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::create_coarse_mesh(
+    parallel::TriangulationBase<dim>  &triangulation,
+    const std::function<void(double)> &before_refining) const
+  {
     const GeometryParameters &g       = parameters.geometry;
     const bool                simplex = kind_ == CellKind::simplex;
     // each refinement makes 2^dim children of a cell (a triangle 4, a
@@ -1016,7 +1026,17 @@ namespace dualcontact
             triangulation.set_manifold(1, inner);
           }
       }
+  }
 
+  template <int dim>
+  void
+  Scene<dim>::refine_initial_mesh(
+    parallel::TriangulationBase<dim>  &triangulation,
+    const std::function<void(double)> &before_refining) const
+  {
+    const GeometryParameters &g        = parameters.geometry;
+    const bool                simplex  = kind_ == CellKind::simplex;
+    const double              children = std::pow(2., dim);
     if (before_refining)
       before_refining(
         triangulation.n_global_active_cells() *

@@ -1,9 +1,13 @@
 // The times of a load path's later steps (step_control.h).
+#include <deal.II/base/exceptions.h>
+
 #include <dualcontact/step_control.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace dualcontact
 {
@@ -97,5 +101,24 @@ namespace dualcontact
     ++n_cuts;
     converged = 0;
     return true;
+  }
+  std::string
+  StepControl::state() const
+  {
+    std::ostringstream out;
+    out << std::setprecision(17) << next << ' ' << time << ' ' << level << ' '
+        << converged;
+    return out.str();
+  }
+
+  void
+  StepControl::load(const std::string &state)
+  {
+    std::istringstream in(state);
+    in >> next >> time >> level >> converged;
+    AssertThrow(in && next >= 1 && next <= times.size(),
+                dealii::ExcMessage("The step control's state '" + state +
+                                   "' is not one that state() writes."));
+    n_cuts = 0;
   }
 } // namespace dualcontact

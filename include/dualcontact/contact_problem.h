@@ -22,6 +22,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dualcontact/checkpoint.h>
 #include <dualcontact/contact_functions.h>
 #include <dualcontact/contact_set.h>
 #include <dualcontact/contact_system.h>
@@ -133,6 +134,27 @@ namespace dualcontact
      */
     void
     solve_step(StepControl &control, CycleResult &result);
+
+    /**
+     * After the later step `step` (every <Output/Checkpoint interval>-th):
+     * the mesh, u, u^{n-1}, the multipliers and the threshold on it, and the
+     * state of the path and of the report, into the folder checkpoint/ of
+     * the output folder (checkpoint.h), which it replaces only once it is
+     * whole. The next step starts as a resumed run's does: without the
+     * predictor's extrapolation, with a new preconditioner.
+     */
+    void
+    write_checkpoint(const StepRecord &step, const StepControl &control);
+
+    /**
+     * Instead of the refinement cycles: the state of the checkpoint in the
+     * output folder, checked against this run's parameters and number of
+     * ranks (InputError if it differs, naming the first entry), with
+     * steps.csv, iterations.csv and probes_steps.csv cut back to its step.
+     * Returns that step; `control` goes on from it.
+     */
+    unsigned int
+    load_checkpoint(StepControl &control);
 
     /**
      * The same mesh at the time of the step: the constraints, and the
@@ -343,7 +365,26 @@ namespace dualcontact
       recorded_parameters = parameter_file;
     }
 
+    /**
+     * Make run() go on from the checkpoint in <Output/Directory>
+     * (load_checkpoint()) instead of starting the path at its first time.
+     */
+    void
+    continue_from_checkpoint()
+    {
+      resume = true;
+    }
+
   private:
+    /**
+     * The mesh and fields of the checkpoint in `folder`, with its record:
+     * the coarse mesh refined as the saved forest and set up, u, u^{n-1},
+     * the multipliers and the threshold; the next step starts without the
+     * predictor, with a new preconditioner.
+     */
+    void
+    load_mesh_and_fields(const std::string      &folder,
+                         const CheckpointRecord &record);
     /** The size of the solution now (ContactSystem::previous). */
     SolutionSize
     solution_size() const;
@@ -473,6 +514,15 @@ namespace dualcontact
     double         dissipated = 0.;
     // the last two steps on this mesh, for the next step's start
     StepPredictor<dim> predictor;
+    // the mesh the later steps are solved on, and the time the last step
+    // started at
+    MeshRecord path_mesh;
+    double     last_step_start = 0.;
+    // run() goes on from a checkpoint; the state was just written to one
+    // or read from it (the next step starts without the predictor and
+    // with a new preconditioner, alike in both runs)
+    bool resume          = false;
+    bool at_a_checkpoint = false;
     // u^{n-1} on the step's mesh, where the slip of the step is counted from,
     // and u^{n-2} (0 before the second step), for the free motion of the
     // nodes that touch during a step; empty on a mesh adapted for the step

@@ -290,10 +290,15 @@ namespace dualcontact
      * (a given threshold is the scene's), l2 only with friction. Returns, over
      * this rank's nodes and before the projection, the smallest l1 and the
      * largest |l2| - g: how far the fields read were from admissible.
+     * With `project` false the values are taken as they are: the fields of
+     * this very set, written and read back (a checkpoint), where |l2| may
+     * exceed g by a rounding error that the next step must see as the
+     * run that was not stopped sees it.
      */
     std::pair<double, double>
     read_fields(const TrilinosWrappers::MPI::Vector &multipliers,
-                const TrilinosWrappers::MPI::Vector &threshold_field);
+                const TrilinosWrappers::MPI::Vector &threshold_field,
+                const bool                           project = true);
 
     /** Number of contact nodes on this rank and on all ranks. */
     unsigned int

@@ -30,9 +30,10 @@ namespace dualcontact
     /**
      * Remove from `directory` the files that a run of dualcontact writes
      * (solution_NN.*, contact_NN.*, solution.pvd, contact.pvd, probes.csv,
-     * cycles.csv, iterations.csv, parameters.prm), so that the files of an
-     * earlier, longer run do not stand next to the new ones. Other files
-     * and folders are kept. Call on one rank; returns how many were removed.
+     * cycles.csv, iterations.csv, parameters.prm, the folder checkpoint/),
+     * so that the files of an earlier, longer run do not stand next to the
+     * new ones. Other files and folders are kept. Call on one rank; returns how
+     * many were removed.
      */
     static unsigned int
     remove_earlier_results(const std::string &directory);

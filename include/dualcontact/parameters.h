@@ -450,6 +450,8 @@ namespace dualcontact
     bool        write_vtu    = true;
     bool        print_timing = true;
     Verbosity   verbosity    = Verbosity::normal;
+    // every n-th later step writes a checkpoint (0: none)
+    unsigned int checkpoint_interval = 0;
     // <Output/Probe points>: each point with its coordinates (dim of them,
     // checked against the dimension with the other entries)
     std::vector<std::vector<double>> probe_points;
@@ -461,6 +463,8 @@ namespace dualcontact
     /** One coordinate per dimension in every probe point. */
     void
     check(const Parameters &parameters) const;
+    std::vector<IneffectiveRule>
+    ineffective_rules(const Parameters &parameters) const;
   };
 
   /**

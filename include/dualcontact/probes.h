@@ -139,6 +139,14 @@ namespace dualcontact
     void
     append_step_csv(const std::string &filename);
 
+    /**
+     * Go on with the file of append_step_csv() as a checkpoint at step
+     * `last_step` left it: its rows of later steps go, and the next call
+     * appends (a resumed run; rank 0).
+     */
+    void
+    resume_step_csv(const std::string &filename, const unsigned int last_step);
+
   private:
     /** The values at every point for `solution`. Collective. */
     std::vector<Value>
@@ -157,6 +165,7 @@ namespace dualcontact
     std::vector<Value>      all_values;
     std::vector<Value>      all_step_values;
     std::size_t             step_values_written = 0; // by append_step_csv
+    bool                    step_csv_started    = false;
   };
 } // namespace dualcontact
 

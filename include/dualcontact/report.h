@@ -65,6 +65,14 @@ namespace dualcontact
     void
     open(const std::string &filename);
 
+    /**
+     * Go on with `filename` as a checkpoint left it: its rows up to the
+     * step `last_step` (column "step") stay, later ones go, and new rows
+     * are appended under its header.
+     */
+    void
+    resume(const std::string &filename, const unsigned int last_step);
+
     /** Append `rows` (flushed, so that the file is whole after each call). */
     void
     add_rows(const std::vector<Row> &rows);
@@ -78,6 +86,17 @@ namespace dualcontact
     std::vector<std::string> columns;
     std::ofstream            file;
   };
+
+  /**
+   * Keep of the CSV file `filename` its header and the rows whose column
+   * `column` is at most `last` (rank 0; a file without the column, or no
+   * file, is left as it is): a run resumed from a checkpoint drops the
+   * rows that the stopped run wrote after it.
+   */
+  void
+  keep_rows_up_to(const std::string &filename,
+                  const std::string &column,
+                  const double       last);
 
   template <int dim>
   class LoopFigure;
@@ -172,6 +191,31 @@ namespace dualcontact
       return step_results;
     }
 
+    /**
+     * A run resumed from the checkpoint at step `last_step` (time `time`)
+     * goes on with the stopped run's tables: steps.csv and iterations.csv
+     * keep their rows up to it, the step numbers and the total time go on
+     * from it, and steps.gp spans the steps before it (their state from
+     * loop_figure_state()).
+     */
+    void
+    resume(const unsigned int last_step,
+           const double       time,
+           const double       total_time,
+           const std::string &loop_figure_state);
+
+    /** After print_scene(): the line that says where a resumed run began. */
+    void
+    print_resume() const;
+
+    /** The solver's time over all cycles and steps so far [s]. */
+    double
+    total_time() const;
+
+    /** What a checkpoint keeps of steps.gp's ranges. */
+    std::string
+    loop_figure_state() const;
+
     /** The convergence table, and the timing summary if asked for. */
     void
     finish() const;
@@ -253,8 +297,14 @@ namespace dualcontact
     bool         uzawa_header_shown = false;
     unsigned int last_uzawa_row     = 0;
 
-    std::vector<CycleResult>     cycle_results;
-    std::vector<CycleResult>     step_results; // a load path's steps
+    std::vector<CycleResult> cycle_results;
+    std::vector<CycleResult> step_results; // a load path's steps
+    // of a run resumed from a checkpoint: the steps and cycles before it,
+    // and their total time
+    unsigned int                 steps_before  = 0;
+    unsigned int                 cycles_before = 0;
+    double                       resumed_time  = 0.;
+    double                       total_before  = 0.;
     std::vector<IterationRecord> iteration_log;
     // the quantities the scene has: their columns and lines
     std::vector<std::unique_ptr<ReportQuantity<dim>>> quantities;

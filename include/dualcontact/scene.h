@@ -127,6 +127,20 @@ namespace dualcontact
     void
     create_mesh(parallel::TriangulationBase<dim>  &triangulation,
                 const std::function<void(double)> &before_refining = {}) const;
+
+    /**
+     * The two parts of create_mesh(): the coarse mesh with its boundary
+     * ids and manifolds (what a checkpoint's mesh is loaded onto), then the
+     * initial global refinement and the pre-refinement.
+     */
+    void
+    create_coarse_mesh(
+      parallel::TriangulationBase<dim>  &triangulation,
+      const std::function<void(double)> &before_refining = {}) const;
+    void
+    refine_initial_mesh(
+      parallel::TriangulationBase<dim>  &triangulation,
+      const std::function<void(double)> &before_refining = {}) const;
     /**
      * The kind of cells the mesh is made of: <Geometry/Cell type>, or the
      * cells of a mesh file of triangles or tetrahedra.

@@ -8,6 +8,7 @@
 #include <dualcontact/parameters.h>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace dualcontact
@@ -87,6 +88,16 @@ namespace dualcontact
     static double
     minimum_step(const std::vector<double> &listed_times,
                  const LoadPathParameters  &parameters);
+
+    /**
+     * Where the path stands (the listed time it heads for, the time
+     * reached, the level and the count of converged steps), as one line of
+     * text that load() reads back exactly: a checkpoint's record.
+     */
+    std::string
+    state() const;
+    void
+    load(const std::string &state);
 
   private:
     double

@@ -69,17 +69,42 @@ namespace dualcontact
       "boundary and is evaluated at the nearest point of the mesh; a point "
       "farther outside is an input error, found on the first mesh. Empty: no "
       "probes.");
+    declarer.declare_entry(
+      "Checkpoint interval",
+      "0",
+      EntryPattern::whole_number(0),
+      "Write a checkpoint after every n-th later step of the load path (each "
+      "row of steps.csv counts) [-]: the folder checkpoint/ in the output "
+      "folder, which each checkpoint replaces, holds the mesh, the "
+      "displacement, the multipliers, the threshold, the slip origins' "
+      "state and the path's place. 'dualcontact scene.prm --resume folder/' "
+      "goes on from it with the same parameters on the same number of MPI "
+      "ranks, and appends to steps.csv and the .pvd files. The step after a "
+      "checkpoint starts from the last step's state, as a resumed run does "
+      "(no extrapolation, a new preconditioner): a resumed run gives the "
+      "same numbers as one that was not stopped. 0: none. Meshes of "
+      "quadrilaterals and hexahedra only.");
     declarer.leave_subsection();
+  }
+
+  std::vector<IneffectiveRule>
+  OutputParameters::ineffective_rules(const Parameters &parameters) const
+  {
+    return {{parameters.load_path.n_steps_on_path() == 1,
+             "Output",
+             {"Checkpoint interval"},
+             "the path has one step"}};
   }
 
   void
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory    = prm.get("Directory");
-    write_vtu    = prm.get_bool("Write vtu");
-    print_timing = prm.get_bool("Print timing");
-    verbosity    = verbosity_names().value(prm.get("Verbosity"));
+    directory           = prm.get("Directory");
+    write_vtu           = prm.get_bool("Write vtu");
+    print_timing        = prm.get_bool("Print timing");
+    verbosity           = verbosity_names().value(prm.get("Verbosity"));
+    checkpoint_interval = prm.get_integer("Checkpoint interval");
     probe_points.clear();
     for (const std::string &point :
          Utilities::split_string_list(prm.get("Probe points"), ';'))

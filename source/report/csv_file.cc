@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 namespace dualcontact
@@ -23,6 +24,50 @@ namespace dualcontact
       return fields;
     }
   } // namespace
+
+  void
+  keep_rows_up_to(const std::string &filename,
+                  const std::string &column,
+                  const double       last)
+  {
+    std::vector<std::string> lines;
+    {
+      std::ifstream in(filename);
+      std::string   line;
+      while (std::getline(in, line))
+        lines.push_back(line);
+    }
+    if (lines.empty())
+      return;
+    const std::vector<std::string> header = fields_of(lines.front());
+    const auto where = std::find(header.begin(), header.end(), column);
+    if (where == header.end())
+      return;
+    const std::size_t c = where - header.begin();
+    std::ofstream     out(filename, std::ios::trunc);
+    out << lines.front() << '\n';
+    for (std::size_t l = 1; l < lines.size(); ++l)
+      {
+        const std::vector<std::string> fields = fields_of(lines[l]);
+        // a line cut short by a stopped run has fewer fields: it goes
+        if (fields.size() == header.size() && std::stod(fields[c]) <= last)
+          out << lines[l] << '\n';
+      }
+  }
+
+  void
+  AppendedCsvFile::resume(const std::string &filename,
+                          const unsigned int last_step)
+  {
+    file.close();
+    name_of_file = filename;
+    keep_rows_up_to(filename, "step", last_step);
+    std::ifstream in(filename);
+    std::string   header;
+    std::getline(in, header);
+    columns = fields_of(header);
+    file.open(filename, std::ios::app);
+  }
 
   void
   AppendedCsvFile::open(const std::string &filename)

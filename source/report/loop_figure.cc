@@ -1,7 +1,11 @@
 #include "loop_figure.h"
 
+#include <deal.II/base/exceptions.h>
+
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 
 namespace dualcontact
 {
@@ -42,6 +46,49 @@ namespace dualcontact
                           0. :
                           found->second[c]);
       }
+  }
+
+  template <int dim>
+  std::string
+  LoopFigure<dim>::state() const
+  {
+    std::ostringstream out;
+    out << std::setprecision(17) << empty << ' ' << normal;
+    for (unsigned int c = 0; c < dim; ++c)
+      out << ' ' << force[c].lowest << ' ' << force[c].highest << ' '
+          << obstacle[c].lowest << ' ' << obstacle[c].highest;
+    out << ' ' << boundary.size();
+    for (const auto &[id, ranges] : boundary)
+      {
+        out << ' ' << id;
+        for (const Range &range : ranges)
+          out << ' ' << range.lowest << ' ' << range.highest;
+      }
+    return out.str();
+  }
+
+  template <int dim>
+  void
+  LoopFigure<dim>::load(const std::string &state)
+  {
+    std::istringstream in(state);
+    in >> empty >> normal;
+    for (unsigned int c = 0; c < dim; ++c)
+      in >> force[c].lowest >> force[c].highest >> obstacle[c].lowest >>
+        obstacle[c].highest;
+    std::size_t n_boundaries = 0;
+    in >> n_boundaries;
+    boundary.clear();
+    for (std::size_t b = 0; b < n_boundaries && in; ++b)
+      {
+        types::boundary_id id = 0;
+        in >> id;
+        for (Range &range : boundary[id])
+          in >> range.lowest >> range.highest;
+      }
+    AssertThrow(in && normal < dim,
+                dealii::ExcMessage("The loop figure's state '" + state +
+                                   "' is not one that state() writes."));
   }
 
   template <int dim>

@@ -37,6 +37,16 @@ namespace dualcontact
     void
     write(const std::string &directory, const bool obstacle_moves) const;
 
+    /**
+     * The figures' ranges as one line of text, which load() reads back
+     * exactly (a checkpoint's record: a resumed run's steps.gp spans the
+     * steps before it too).
+     */
+    std::string
+    state() const;
+    void
+    load(const std::string &state);
+
   private:
     /** The span of a figure over the steps, 0 included. */
     struct Range

@@ -1,0 +1,233 @@
+// Checkpoint and restart of a load path (doc/theory.md §11, "Restart"): a
+// cycle stopped after its checkpoint and resumed gives the numbers of the
+// run that was not stopped, on a fixed mesh and on one adapted at every
+// step; a checkpoint of another scene, of another number of ranks, or none,
+// is refused. Tagged [path]: ctest runs them on 1 and 2 ranks.
+
+#include <deal.II/base/mpi.h>
+
+#include <dualcontact/checkpoint.h>
+#include <dualcontact/contact_problem.h>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene_run.h"
+#include "test_tools.h"
+
+using namespace dualcontact;
+using namespace dualcontact_test;
+
+namespace
+{
+  // the cylinder of prm/cattaneo_mindlin.prm pressed to t = 1, sheared to
+  // t = 2 and back to t = 3 in twelve steps, on its first mesh, with a
+  // checkpoint after every sixth step: the one after step 6 stays (none is
+  // written after the last step)
+  const std::string cycle =
+    "subsection Refinement\n  set Number of cycles = 1\nend\n"
+    "subsection Load path\n  set Times = 0.25, 0.5, 0.75, 1, 1.25, 1.5, "
+    "1.75, 2, 2.25, 2.5, 2.75, 3\nend\n"
+    "subsection Output\n  set Checkpoint interval = 6\nend\n";
+
+  // the same with the mesh adapted before every later step
+  const std::string adapted =
+    cycle +
+    "subsection Refinement\n  set Strategy = contact\n  set Refine fraction "
+    "= 0.1\n  set Coarsen fraction = 0.4\nend\n"
+    "subsection Load path\n  set Adapt at every step = true\nend\n";
+
+  /** A file of the run's output folder, as rank 0 reads it. */
+  std::string
+  output_file(const Run &run, const std::string &name)
+  {
+    std::string text;
+    if (Utilities::MPI::this_mpi_process(run.comm) == 0)
+      text = read_text(run.directory + "/" + name);
+    return Utilities::MPI::broadcast(run.comm, text, 0);
+  }
+
+  /**
+   * The largest relative difference of two CSV texts with the same header,
+   * over their rows and all columns but the wall times and the memory
+   * (they differ from run to run); 1 if the rows or columns differ.
+   */
+  double
+  csv_difference(const std::string &a, const std::string &b)
+  {
+    const auto split = [](const std::string &text, const char separator) {
+      std::vector<std::string> parts;
+      std::istringstream       in(text);
+      for (std::string part; std::getline(in, part, separator);)
+        parts.push_back(part);
+      return parts;
+    };
+    const std::vector<std::string> lines_a = split(a, '\n'),
+                                   lines_b = split(b, '\n');
+    if (lines_a.size() != lines_b.size() || lines_a.empty() ||
+        lines_a.front() != lines_b.front())
+      return 1.;
+    const std::vector<std::string> header = split(lines_a.front(), ',');
+    double                         worst  = 0.;
+    for (std::size_t l = 1; l < lines_a.size(); ++l)
+      {
+        const auto fields_a = split(lines_a[l], ','),
+                   fields_b = split(lines_b[l], ',');
+        if (fields_a.size() != fields_b.size())
+          return 1.;
+        for (std::size_t c = 0; c < fields_a.size() && c < header.size(); ++c)
+          {
+            if (header[c].compare(0, 4, "time") == 0 ||
+                header[c] == "memory_mb" || fields_a[c] == fields_b[c])
+              continue;
+            try
+              {
+                const double x = std::stod(fields_a[c]),
+                             y = std::stod(fields_b[c]);
+                worst =
+                  std::max(worst,
+                           std::abs(x - y) /
+                             std::max({std::abs(x), std::abs(y), 1e-300}));
+              }
+            catch (const std::exception &)
+              {
+                return 1.; // a word that differs
+              }
+          }
+      }
+    return worst;
+  }
+
+  /**
+   * Run `scene` through, then resume it from its checkpoint (after step 6)
+   * in the same folder, with a line cut short at the end of steps.csv as a
+   * run stopped while writing leaves it: steps.csv, iterations.csv and the
+   * last contact table must come out as the first run wrote them, and the
+   * resumed steps must hold the same numbers.
+   */
+  void
+  check_resumed_run(const std::string &scene)
+  {
+    const Run                       run("cattaneo_mindlin.prm", scene);
+    const std::vector<CycleResult> &full = run.problem->steps();
+    REQUIRE(full.size() == 12);
+    const std::string steps      = output_file(run, "steps.csv");
+    const std::string iterations = output_file(run, "iterations.csv");
+    const std::string last       = output_file(run, "contact_step_012.csv");
+    REQUIRE(!last.empty());
+
+    if (Utilities::MPI::this_mpi_process(run.comm) == 0)
+      std::ofstream(run.directory + "/steps.csv", std::ios::app) << "13,3.2";
+    std::ostringstream screen;
+    ContactProblem<2>  resumed(run.parameters, run.comm, screen);
+    resumed.continue_from_checkpoint();
+    resumed.run();
+    // (the screen of rank 0)
+    const std::string shown =
+      Utilities::MPI::broadcast(run.comm, screen.str(), 0);
+    INFO(shown);
+    CHECK(
+      contains(shown, "Resumed from the checkpoint at load step 6, t = 1.5"));
+
+    // the six steps after the checkpoint, record by record
+    const std::vector<CycleResult> &later = resumed.steps();
+    REQUIRE(later.size() == 6);
+    for (unsigned int n = 0; n < 6; ++n)
+      {
+        const CycleResult &a = later[n], &b = full[n + 6];
+        INFO("step " << b.step.step);
+        CHECK(a.step.step == b.step.step);
+        CHECK(a.step.time == b.step.time);
+        CHECK(a.mesh.n_dofs == b.mesh.n_dofs);
+        CHECK(a.solve.uzawa_steps == b.solve.uzawa_steps);
+        CHECK(a.solve.n_stick == b.solve.n_stick);
+        CHECK(a.solve.n_slip == b.solve.n_slip);
+        CHECK(a.zone.contact_force == b.zone.contact_force);
+        CHECK(a.zone.tangential_force == b.zone.tangential_force);
+        CHECK(a.step.dissipation_total == b.step.dissipation_total);
+      }
+
+    // the files: the resumed run's rows after the first run's, the same
+    const double steps_difference =
+      csv_difference(output_file(run, "steps.csv"), steps);
+    const double iterations_difference =
+      csv_difference(output_file(run, "iterations.csv"), iterations);
+    const double last_difference =
+      csv_difference(output_file(run, "contact_step_012.csv"), last);
+    INFO("relative differences: steps.csv "
+         << steps_difference << ", iterations.csv " << iterations_difference
+         << ", contact_step_012.csv " << last_difference);
+    CHECK(steps_difference <= 1e-12);
+    CHECK(iterations_difference <= 1e-12);
+    CHECK(last_difference <= 1e-12);
+  }
+} // namespace
+
+TEST_CASE("Restart: a Cattaneo-Mindlin cycle of twelve steps resumed from "
+          "its checkpoint after step 6 gives the numbers of the run that "
+          "was not stopped",
+          "[path]")
+{
+  SECTION("the finest mesh of the cycles for every step")
+  {
+    check_resumed_run(cycle);
+  }
+  SECTION("a mesh adapted at every step")
+  {
+    check_resumed_run(adapted);
+  }
+}
+
+TEST_CASE("Restart: a folder without a checkpoint, a checkpoint of another "
+          "scene or of another number of ranks is refused, naming why",
+          "[path]")
+{
+  const Run  run("cattaneo_mindlin.prm", cycle);
+  const auto resume = [&run](const std::string &overrides,
+                             const MPI_Comm     comm) {
+    return catch_input_error([&]() {
+      Parameters parameters;
+      parameters.read_string(
+        read_text(test_file("../prm/cattaneo_mindlin.prm")),
+        cycle + overrides +
+          "subsection Output\n  set Directory = " + run.directory +
+          "\n  set Write vtu = false\n  set Print "
+          "timing = false\nend\n");
+      std::ostringstream screen;
+      ContactProblem<2>  problem(parameters, comm, screen);
+      problem.continue_from_checkpoint();
+      problem.run();
+    });
+  };
+
+  // another friction coefficient: the entry is named with both values
+  const CaughtError other =
+    resume("subsection Friction\n  set Coefficient = 0.4\nend\n", run.comm);
+  CHECK(other.code == exit_inconsistent);
+  CHECK(contains(other.message,
+                 "is of another scene: <Friction/Coefficient> is '0.4' in "
+                 "the scene and '0.3' in the checkpoint"));
+  // what is shown and how often checkpoints are written may differ
+  const std::string saved =
+    read_text(checkpoint_folder(run.directory) + "/parameters.prm");
+  CHECK(first_difference(run.parameters.parameter_file, saved, {}).empty());
+
+  // written on 2 ranks, resumed on 1
+  if (Utilities::MPI::n_mpi_processes(run.comm) == 2)
+    {
+      const CaughtError ranks = resume("", MPI_COMM_SELF);
+      CHECK(ranks.code == exit_inconsistent);
+      CHECK(contains(ranks.message,
+                     "was written on 2 MPI ranks, and this run has 1: "
+                     "resume it on 2"));
+    }
+
+  // no checkpoint
+  remove_directory(checkpoint_folder(run.directory), run.comm);
+  const CaughtError none = resume("", run.comm);
+  CHECK(none.code == exit_cannot_read_file);
+  CHECK(contains(none.message, "There is no checkpoint to resume from in"));
+}
