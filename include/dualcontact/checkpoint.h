@@ -35,11 +35,6 @@ namespace dualcontact
     text(const std::string &key) const;
     double
     number(const std::string &key) const;
-    bool
-    has(const std::string &key) const
-    {
-      return values.count(key) > 0;
-    }
 
     /** Every key that begins with `prefix`, with its value. */
     std::map<std::string, std::string>

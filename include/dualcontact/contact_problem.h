@@ -140,8 +140,10 @@ namespace dualcontact
      * the mesh, u, u^{n-1}, the multipliers and the threshold on it, and the
      * state of the path and of the report, into the folder checkpoint/ of
      * the output folder (checkpoint.h), which it replaces only once it is
-     * whole. The next step starts as a resumed run's does: without the
-     * predictor's extrapolation, with a new preconditioner.
+     * whole. The run then goes on from the mesh and fields it reads back,
+     * as a resumed run does (doc/theory.md §11, "Restart"): the next step
+     * starts without the predictor's extrapolation, with a new
+     * preconditioner, and with the cells in the forest's order.
      */
     void
     write_checkpoint(const StepRecord &step, const StepControl &control);
