@@ -79,26 +79,6 @@ namespace dualcontact
                           comm);
     if (same_nodes == 0)
       return 0.;
-    // a contact zone that grew over the last step by more than 2 % of its
-    // nodes: the pressure behind its moving edge is not linear in the load
-    // (l1 ~ sqrt(a - x)), and the nodes that touched during the step have
-    // their slip counted from the touch (ContactSet::set_touch_origin);
-    // extrapolated, the edge lands nodes away from the step's answer and
-    // the first Uzawa steps' Newton iterations are damped through the
-    // status changes (doc/performance.md). Rising normal loads grow a zone
-    // by 5-50 % a step; a shear moves its edges by a node or so (beta != 0),
-    // which extrapolation handles.
-    long counts[2] = {0, 0}; // nodes in contact at t_{n-1} and t_{n-2}
-    for (unsigned int s = 0; s < newer.l1.size(); ++s)
-      {
-        counts[0] += (newer.l1[s] > 0.);
-        counts[1] += (older.l1[s] > 0.);
-      }
-    Utilities::MPI::sum(ArrayView<const long>(counts, 2),
-                        comm,
-                        ArrayView<long>(counts, 2));
-    if (counts[0] - counts[1] > 0.02 * counts[1])
-      return 0.;
 
     // each load's increment ratio: the right-hand side's, the obstacle's
     TrilinosWrappers::MPI::Vector d_new(rhs), d_old(newer.rhs);

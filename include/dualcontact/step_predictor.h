@@ -29,11 +29,9 @@ namespace dualcontact
    * and the obstacle's translation, each taken separately. The predictor
    * extrapolates only where every load that changes keeps its direction
    * (each increment within 60 degrees of the one before) at the same
-   * ratio alpha, and where the contact zone did not grow over the last
-   * step (by more than 2 % of its nodes); at a turn of the path the
-   * extrapolation would overshoot, behind a moving contact edge the state is
-   * not linear in the load, and the step starts from the last one's state as it
-   * is. The extrapolated multipliers are projected onto their admissible sets
+   * ratio alpha; at a turn of the path the extrapolation would overshoot,
+   * and the step starts from the last one's state as it is. The
+   * extrapolated multipliers are projected onto their admissible sets
    * (l1 >= 0, g >= 0, |l2| <= g), so that the Uzawa iteration starts from
    * a point it could have reached, and converges to the same answer.
    */

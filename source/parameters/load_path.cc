@@ -64,9 +64,7 @@ namespace dualcontact
       EntryPattern::boolean(),
       "true: a later step starts from the linear extrapolation of the last "
       "two steps (v, the multipliers and the threshold), where the loads "
-      "keep their direction and the last step did not grow the contact "
-      "zone (by more than 2 % of its nodes), and from the last step's state "
-      "where they turn or it grew "
+      "keep their direction, and from the last step's state where they turn "
       "(and at the second step, and on a mesh adapted for the step). false: "
       "every later step starts from the last step's state. Only the cost "
       "differs: steps.csv's column predictor has the factor of the "

@@ -689,23 +689,16 @@ TEST_CASE("The predictor changes the cost of the steps, not their answer: "
   REQUIRE(a.size() == 16);
   REQUIRE(b.size() == 16);
   // pressed to t = 1 in four steps, sheared to t = 2, back to t = 3,
-  // forward to t = 4: the second step has one state before it, the steps
-  // at t = 1.25, 2.25, 3.25 turn the path (the extrapolation would
-  // overshoot), and a step after one that grew the contact zone by more
-  // than 2 % starts from the last state too (the pressing steps); every other
-  // later step is extrapolated, at alpha = 1
-  unsigned int uzawa_a = 0, uzawa_b = 0, extrapolated = 0;
+  // forward to t = 4: the second step has one state before it, and the
+  // steps at t = 1.25, 2.25, 3.25 turn the path (the extrapolation would
+  // overshoot); every other later step is extrapolated, at alpha = 1
+  unsigned int uzawa_a = 0, uzawa_b = 0;
   for (unsigned int n = 0; n < 16; ++n)
     {
       INFO("step " << n + 1);
       const bool turn = n < 2 || n == 4 || n == 8 || n == 12;
-      const bool grown =
-        n >= 2 && a[n - 1].solve.n_active > 1.02 * a[n - 2].solve.n_active;
-      if (n == 2 || n == 3)
-        CHECK(grown);
       CHECK(b[n].solve.predictor == 0.);
-      extrapolated += (a[n].solve.predictor != 0.);
-      if (turn || grown)
+      if (turn)
         CHECK(a[n].solve.predictor == 0.);
       else
         CHECK(std::abs(a[n].solve.predictor - 1.) <= 1e-10);
@@ -727,7 +720,6 @@ TEST_CASE("The predictor changes the cost of the steps, not their answer: "
        << " with the predictor, " << uzawa_b << " without");
   CHECK(difference <= 1e-6 * F * p0);
   // it saves Uzawa steps (one in seven on the extrapolated shear steps)
-  CHECK(extrapolated >= 6);
   CHECK(uzawa_a < uzawa_b);
 }
 
