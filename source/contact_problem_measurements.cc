@@ -245,7 +245,17 @@ namespace dualcontact
     scale = std::max(scale, std::sqrt(norm_square(zone.resultant)));
     // along a load path, not below the previous step's contact force: a
     // step that unloads everything balances to the round-off of the path
-    scale            = std::max(scale, previous_size.contact_force);
+    scale = std::max(scale, previous_size.contact_force);
+    // and not below a hundredth of E |u|_max L^(dim-2), the force that
+    // would strain the body by |u|_max / L: where the displacement is
+    // (nearly) a rigid motion that carries no force (a clamped body moved
+    // clear of the obstacle, two bodies lifted apart), every force is the
+    // round-off of that motion, and their sum relative to themselves is
+    // 1 (doc/theory.md §8)
+    scale = std::max(scale,
+                     1e-2 * parameters.material.stiffest().youngs_modulus *
+                       solution.linfty_norm() *
+                       std::pow(scene.characteristic_length(), dim - 2));
     record.imbalance = scale > 0. ? std::sqrt(norm_square(sum)) / scale : 0.;
     return record;
   }

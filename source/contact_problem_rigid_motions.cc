@@ -104,10 +104,9 @@ namespace dualcontact
           motions.push_back(std::move(w));
         }
 
-    // G: how far a combination moves what holds it, the supports and the
-    // contact nodes' constraints; H: how far it moves the supports and the
-    // contact nodes at all (the relative motion whole)
-    FullMatrix<double>                         held(gram), moved(gram);
+    // The contact nodes' Gram matrices: how far a combination moves the
+    // contact nodes' constraints (along n_s without friction, whole with
+    // it), and how far it moves them at all (the relative motion whole)
     double                                     area = 0.;
     std::vector<Tensor<1, dim>>                relative(n);
     std::vector<TrilinosWrappers::MPI::Vector> ghosted;
@@ -140,29 +139,13 @@ namespace dualcontact
       }
     Utilities::MPI::sum(contact_held, mpi_communicator, contact_held);
     Utilities::MPI::sum(contact_moved, mpi_communicator, contact_moved);
-    held.add(1., contact_held);
-    moved.add(1., contact_moved);
+    const double support_measure = measure;
     measure += Utilities::MPI::sum(area, mpi_communicator);
 
-    // A combination that moves nothing (H c = 0) is free; among the others
-    // (H^(-1/2) whitened, so that each eigenvalue is the held fraction of a
-    // motion, the mean of cos^2 of the angle between it and n_s) those that
-    // G holds by less than 5 %: they move the contact nodes at right angles
-    // to n_s, to within about 13 degrees on average. That is a rigid
-    // plane's tangential motion (exactly at right angles), and between two
-    // bodies the sideways motions that only the discretisation error of
-    // the normals holds: two identical balls press along their plane of
-    // symmetry, whose normal the bisector n_s gives up to that error, and
-    // in the linear model (small sliding) the upper ball's sideways
-    // translations and its rotation about the axis are free. Held by that
-    // error (0.02-0.6 % of them in prm/two_spheres.prm; the motions that the
-    // contact holds, 94-100 %), they would take a step of F / chi in each
-    // Uzawa step along the force F that the same error leaves, and d(v)
-    // would not fall.
-    const auto all_eigen = [n](const FullMatrix<double> &matrix,
-                               Vector<double>           &values,
-                               FullMatrix<double>       &vectors) {
-      LAPACKFullMatrix<double> m(n);
+    const auto all_eigen = [](const FullMatrix<double> &matrix,
+                              Vector<double>           &values,
+                              FullMatrix<double>       &vectors) {
+      LAPACKFullMatrix<double> m(matrix.m());
       m = matrix;
       m.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
                                       std::numeric_limits<double>::max(),
@@ -170,53 +153,115 @@ namespace dualcontact
                                       values,
                                       vectors);
     };
-    Vector<double>     h_values;
-    FullMatrix<double> h_vectors;
-    // the free combinations, and whether they keep the start's value:
+    // The supports first: a prescribed displacement holds every motion it
+    // moves at all, however little of it (a hard constraint, against which
+    // the body is as stiff as its material). The candidates are the
+    // combinations Z that no support moves (G_D z = 0); the contact decides
+    // among them.
+    std::vector<Vector<double>> unsupported;
+    {
+      Vector<double>     values;
+      FullMatrix<double> vectors;
+      all_eigen(gram, values, vectors);
+      for (unsigned int k = 0; k < values.size(); ++k)
+        if (values[k] <= 1e-10 * std::max(support_measure, 1e-300))
+          {
+            Vector<double> z(n);
+            for (unsigned int i = 0; i < n; ++i)
+              z[i] = vectors(i, k);
+            unsupported.push_back(z);
+          }
+    }
+    const unsigned int n_z = unsupported.size();
+    // the contact's Gram matrices on Z (z_k orthonormal)
+    const auto on_unsupported = [&](const FullMatrix<double> &matrix) {
+      FullMatrix<double> reduced(n_z, n_z);
+      Vector<double>     mz(n);
+      for (unsigned int k = 0; k < n_z; ++k)
+        {
+          matrix.vmult(mz, unsupported[k]);
+          for (unsigned int l = 0; l < n_z; ++l)
+            reduced(l, k) = unsupported[l] * mz;
+        }
+      return reduced;
+    };
+    const auto combination = [&](const auto &coefficient) {
+      Vector<double> c(n);
+      for (unsigned int k = 0; k < n_z; ++k)
+        c.add(coefficient(k), unsupported[k]);
+      return c;
+    };
+
+    // A combination of Z that moves no contact node (H c = 0) is free;
+    // among the others (H^(-1/2) whitened, so that each eigenvalue is the
+    // held fraction of a motion, the mean of cos^2 of the angle between it
+    // and n_s) those that G holds by less than 5 %: they move the contact
+    // nodes at right angles to n_s, to within about 13 degrees on average.
+    // That is a rigid plane's tangential motion (exactly at right angles),
+    // and between two bodies the sideways motions that only the
+    // discretisation error of the normals holds: two identical balls press
+    // along their plane of symmetry, whose normal the bisector n_s gives up
+    // to that error, and in the linear model (small sliding) the upper
+    // ball's sideways translations and its rotation about the axis are
+    // free. Held by that error (0.02-0.6 % of them in prm/two_spheres.prm;
+    // the motions that the contact holds, 94-100 %), they would take a step
+    // of F / chi in each Uzawa step along the force F that the same error
+    // leaves, and d(v) would not fall.
+    // The free combinations, and whether they keep the start's value:
     // those that something holds weakly, and between bodies all (a body's
     // motion relative to another, which the first Newton solve leaves as
     // inexact as its tolerance, would stay there)
     const bool                                   several_bodies = n_bodies > 1;
     std::vector<std::pair<Vector<double>, bool>> free_combinations;
-    all_eigen(moved, h_values, h_vectors);
-    std::vector<Vector<double>> whitened;
-    for (unsigned int k = 0; k < h_values.size(); ++k)
+    if (n_z > 0)
       {
-        Vector<double> c(n);
-        for (unsigned int i = 0; i < n; ++i)
-          c[i] = h_vectors(i, k);
-        if (h_values[k] <= 1e-10 * measure)
-          free_combinations.emplace_back(c, several_bodies);
-        else
+        Vector<double>     h_values;
+        FullMatrix<double> h_vectors;
+        all_eigen(on_unsupported(contact_moved), h_values, h_vectors);
+        std::vector<Vector<double>> whitened; // in the coordinates of Z
+        for (unsigned int k = 0; k < n_z; ++k)
           {
-            c /= std::sqrt(h_values[k]);
-            whitened.push_back(c);
+            const auto column = [&](const unsigned int i) {
+              return h_vectors(i, k);
+            };
+            if (h_values[k] <= 1e-10 * measure)
+              free_combinations.emplace_back(combination(column),
+                                             several_bodies);
+            else
+              {
+                Vector<double> c(n_z);
+                for (unsigned int i = 0; i < n_z; ++i)
+                  c[i] = column(i) / std::sqrt(h_values[k]);
+                whitened.push_back(c);
+              }
           }
-      }
-    const unsigned int r = whitened.size();
-    if (r > 0)
-      {
-        FullMatrix<double> reduced(r, r);
-        Vector<double>     gc(n);
-        for (unsigned int k = 0; k < r; ++k)
+        const unsigned int r = whitened.size();
+        if (r > 0)
           {
-            held.vmult(gc, whitened[k]);
-            for (unsigned int l = 0; l < r; ++l)
-              reduced(l, k) = whitened[l] * gc;
-          }
-        LAPACKFullMatrix<double> g(r);
-        g = reduced;
-        Vector<double>     values;
-        FullMatrix<double> vectors;
-        g.compute_eigenvalues_symmetric(
-          -std::numeric_limits<double>::max(), 0.05, 0., values, vectors);
-        for (unsigned int e = 0; e < values.size(); ++e)
-          {
-            Vector<double> c(n);
+            const FullMatrix<double> held = on_unsupported(contact_held);
+            FullMatrix<double>       reduced(r, r);
+            Vector<double>           gc(n_z);
             for (unsigned int k = 0; k < r; ++k)
-              c.add(vectors(k, e), whitened[k]);
-            free_combinations.emplace_back(c,
-                                           several_bodies || values[e] > 1e-10);
+              {
+                held.vmult(gc, whitened[k]);
+                for (unsigned int l = 0; l < r; ++l)
+                  reduced(l, k) = whitened[l] * gc;
+              }
+            LAPACKFullMatrix<double> g(r);
+            g = reduced;
+            Vector<double>     values;
+            FullMatrix<double> vectors;
+            g.compute_eigenvalues_symmetric(
+              -std::numeric_limits<double>::max(), 0.05, 0., values, vectors);
+            for (unsigned int e = 0; e < values.size(); ++e)
+              {
+                Vector<double> c_z(n_z);
+                for (unsigned int k = 0; k < r; ++k)
+                  c_z.add(vectors(k, e), whitened[k]);
+                free_combinations.emplace_back(
+                  combination([&](const unsigned int i) { return c_z[i]; }),
+                  several_bodies || values[e] > 1e-10);
+              }
           }
       }
 

@@ -90,3 +90,104 @@ TEST_CASE("The semi-coercive 3D half ball converges like the 2D one: at "
   CHECK(h < 0.15 * a);
   CHECK(std::abs(last.zone.edge_half_width - a) <= h);
 }
+
+namespace
+{
+  // A block 1 x 4 (1 x 1 x 4) on the frictionless plane through the origin,
+  // its top clamped and moved by `top` (the bottom slides).
+  std::string
+  clamped_block(const unsigned int dim, const std::string &top)
+  {
+    return std::string("subsection Geometry\n  set Dimension = ") +
+           std::to_string(dim) +
+           "\n  set Type = rectangle\n  set Upper right corner = " +
+           (dim == 2 ? "1, 4" : "1, 1, 4") + "\n  set Subdivisions = " +
+           (dim == 2 ? "2, 8" : "2, 2, 8") +
+           "\nend\nsubsection Material\n  set Young's modulus = 1000\n  set "
+           "Poisson's ratio = 0.3\nend\nsubsection Boundary conditions\n  "
+           "set Conditions = " +
+           (dim == 2 ? "2: contact, 3: fixed" : "4: contact, 5: fixed") +
+           "\n  set Displacements = " + (dim == 2 ? "3: " : "5: ") + top +
+           "\nend\n";
+  }
+
+  // The mean u_x over the contact nodes (weighted by m_s): how far the
+  // bottom slides
+  template <int dim>
+  double
+  mean_slide(const SceneRun<dim> &run)
+  {
+    const ContactSet<dim> &contact = run.problem->contact();
+    const auto            &u       = run.problem->displacement();
+    double                 sums[2] = {0., 0.};
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      {
+        sums[0] += contact.nodes[s].weight * u[contact.nodes[s].dofs[0]];
+        sums[1] += contact.nodes[s].weight;
+      }
+    return Utilities::MPI::sum(sums[0], MPI_COMM_WORLD) /
+           Utilities::MPI::sum(sums[1], MPI_COMM_WORLD);
+  }
+} // namespace
+
+TEST_CASE("A clamp that moves the body sideways over a frictionless plane "
+          "holds every rigid motion: no free motion, the bottom slides by "
+          "the clamp's motion, and no horizontal reaction is left (2D, 3D)",
+          "[free motions]")
+{
+  // The contact holds the vertical motion and the rotations; the clamp
+  // holds all of them, and a rotation about the clamped top moves the top
+  // by little against the bottom: a support holds what it moves at all.
+  // Anchored at the start as a weakly held motion, the sideways slide kept
+  // a proximal force chi M u_x in the solution (5e-4 of the contact force).
+  {
+    const Run run("", clamped_block(2, "0.01; -0.01"));
+    CHECK(n_free_motions(run) == 0);
+    const CycleResult &r = run.last();
+    INFO("imbalance " << r.reactions.imbalance << ", horizontal reaction "
+                      << r.reactions.on_id.at(3)[0]);
+    CHECK(r.reactions.imbalance < 1e-10);
+    CHECK(std::abs(r.reactions.on_id.at(3)[0]) < 1e-10 * r.zone.contact_force);
+    CHECK(r.zone.contact_force > 1.);
+    // the bottom slides by the clamp's 0.01 (and spreads symmetrically
+    // about its middle, nu / (1 - nu) eps x)
+    CHECK(mean_slide(run) == Approx(0.01).epsilon(1e-8));
+  }
+  {
+    const SceneRun<3> run("", clamped_block(3, "0.01; 0; -0.01"));
+    CHECK(n_free_motions(run) == 0);
+    const CycleResult &r = run.last();
+    INFO("imbalance " << r.reactions.imbalance);
+    CHECK(r.reactions.imbalance < 1e-10);
+    CHECK(std::abs(r.reactions.on_id.at(5)[0]) < 1e-10 * r.zone.contact_force);
+  }
+}
+
+TEST_CASE("A clamped body moved without touching anything carries no force: "
+          "it moves rigidly and balances (a block toward a plane it never "
+          "reaches, two cylinders lifted apart)",
+          "[free motions]")
+{
+  // every force is the round-off of a rigid motion; the balance measures
+  // it against the force that would strain the body as much as it moves
+  {
+    Run run("",
+            clamped_block(2, "0; -0.01") +
+              "subsection Foundation\n  set Point = 0, -0.02\nend\n");
+    const CycleResult &r = run.last();
+    CHECK(r.zone.contact_force == 0.);
+    CHECK(r.reactions.imbalance < 1e-7);
+    CHECK(std::abs(r.reactions.on_id.at(3)[1]) < 1e-8);
+  }
+  {
+    const Run run("two_cylinders.prm",
+                  "subsection Refinement\n  set Number of cycles = 1\n  set "
+                  "Initial global refinement = 2\nend\nsubsection Geometry\n  "
+                  "set Pre-refinement steps = 2\nend\nsubsection Boundary "
+                  "conditions\n  set Conditions = 1: fixed, 3: fixed\n  set "
+                  "Tractions =\n  set Displacements = 1: 0; 0.01\nend\n");
+    const CycleResult &r = run.last();
+    CHECK(r.zone.contact_force == 0.);
+    CHECK(r.reactions.imbalance < 1e-7);
+  }
+}
