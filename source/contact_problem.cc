@@ -302,7 +302,7 @@ namespace dualcontact
   void
   ContactProblem<dim>::move_to_step_time()
   {
-    make_constraints();
+    make_constraints(scene.effects().contact && contact_set.has_pairs());
     if (scene.effects().contact)
       contact_set.place_obstacle(scene, mpi_communicator);
   }
@@ -530,6 +530,8 @@ namespace dualcontact
           mapping, dof_handler, hanging_node_constraints, constraints, scene);
         AssertThrow(contact_set.n_global_nodes() > 0,
                     ExcMessage("The contact boundary has no contact nodes."));
+        if (contact_set.has_pairs())
+          make_constraints(true);
       }
 
     // The elements' couplings, and on a pair those of each slave node with
@@ -565,8 +567,18 @@ namespace dualcontact
 
   template <int dim>
   void
-  ContactProblem<dim>::make_constraints()
+  ContactProblem<dim>::make_constraints(const bool couple_masters)
   {
+    // A slave node's coupling adds its forces and its Newton terms at the
+    // master DoFs through these constraints. A master DoF off this rank's
+    // cells that a slider or a clamp holds (the master body's end on a
+    // symmetry plane) must be known as constrained here too, or its force
+    // goes into an equation that the solve does not have: the Newton
+    // gradient then keeps a part that no step reduces. Its owner has the
+    // constraint and sends it.
+    IndexSet relevant = locally_relevant_dofs;
+    if (couple_masters)
+      relevant.add_indices(contact_set.master_dofs(dof_handler.n_dofs()));
     hanging_node_constraints.clear();
     hanging_node_constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler,
@@ -582,8 +594,10 @@ namespace dualcontact
         AffineConstraints<double> &c =
           homogeneous ? homogeneous_constraints : constraints;
         c.clear();
-        c.reinit(locally_relevant_dofs);
-        c.merge(hanging_node_constraints);
+        c.reinit(relevant);
+        c.merge(hanging_node_constraints,
+                AffineConstraints<double>::no_conflicts_allowed,
+                /*allow_different_local_lines=*/couple_masters);
         for (const types::boundary_id id :
              scene.ids_with(BoundaryCondition::fixed))
           VectorTools::interpolate_boundary_values(
@@ -596,6 +610,10 @@ namespace dualcontact
         if (!sliders.empty())
           VectorTools::compute_no_normal_flux_constraints(
             dof_handler, 0, sliders, c, mapping);
+        if (couple_masters)
+          c.make_consistent_in_parallel(locally_owned_dofs,
+                                        relevant,
+                                        mpi_communicator);
         c.close();
       }
   }

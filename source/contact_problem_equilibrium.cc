@@ -60,16 +60,28 @@ namespace dualcontact
   }
 
   template <int dim>
-  double
+  std::vector<double>
   ContactProblem<dim>::check_equilibrium() const
   {
     // A translation that only the contact can stop must be balanced by
     // contact forces: they push along m (never pull) and their tangential
     // part is at most what the friction law can resist. Necessary
     // conditions, checked before solving so that an impossible load never
-    // loops (doc/theory.md §8).
+    // loops (doc/theory.md §8). The obstacle's checks see the whole mesh
+    // (its bodies held together by their pairs) and the obstacle's contact
+    // nodes; each body held by a pair alone is checked on its own.
+    std::vector<double> held_pressure;
     if (contact_set.has_pairs())
-      check_pair_bodies();
+      check_pair_bodies(held_pressure);
+    const auto on_obstacle = [this](const unsigned int s) {
+      return contact_set.nodes[s].masters.empty();
+    };
+    unsigned int n_obstacle = 0;
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      n_obstacle += on_obstacle(s);
+    if (Utilities::MPI::sum(n_obstacle, mpi_communicator) == 0)
+      return held_pressure;
+
     const Tensor<1, dim> m = -contact_set.normal; // into the body
     LoadBalance          balance;
     Tensor<1, dim>       resultant;
@@ -83,6 +95,19 @@ namespace dualcontact
     balance.normal_free = scene.translation_is_free(m, triangulation);
     balance.load_away   = net_load(m);
 
+    // what the friction law can resist: from sum_s m_s p_s, max_s p_s (p
+    // its parameter) and the normal load, over the obstacle's nodes
+    double weighted = 0., largest = 0., measure = 0.;
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      if (on_obstacle(s))
+        {
+          weighted +=
+            contact_set.nodes[s].weight * contact_set.friction_parameter[s];
+          largest = std::max(largest, contact_set.friction_parameter[s]);
+          measure += contact_set.nodes[s].weight;
+        }
+    measure = Utilities::MPI::sum(measure, mpi_communicator);
+
     // N / |Gamma_C| if only friction holds a tangential load and N is known
     // (on a plane: a curved obstacle also holds tangential loads by its
     // normal pressure)
@@ -94,18 +119,9 @@ namespace dualcontact
           const double load = std::abs(net_load(t));
           balance.tangential_loads.push_back(load);
           if (balance.normal_free && load > 1e-10 * balance.resultant)
-            pressure = -balance.load_away / contact_set.measure();
+            pressure = -balance.load_away / measure;
         }
 
-    // what the friction law can resist: from sum_s m_s p_s, max_s p_s (p
-    // its parameter) and the normal load
-    double weighted = 0., largest = 0.;
-    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-      {
-        weighted +=
-          contact_set.nodes[s].weight * contact_set.friction_parameter[s];
-        largest = std::max(largest, contact_set.friction_parameter[s]);
-      }
     std::string  why;
     const double capacity = scene.effects().friction_law().capacity(
       Utilities::MPI::sum(weighted, mpi_communicator),
@@ -115,12 +131,20 @@ namespace dualcontact
     dualcontact::check_equilibrium(balance, capacity, why);
     if (balance.normal_free && plane)
       check_moment(balance);
-    return pressure;
+    if (pressure > 0.)
+      {
+        held_pressure.resize(contact_set.n_local_nodes(), 0.);
+        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+          if (on_obstacle(s))
+            held_pressure[s] = pressure;
+      }
+    return held_pressure;
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::check_pair_bodies() const
+  ContactProblem<dim>::check_pair_bodies(
+    std::vector<double> &held_pressure) const
   {
     // A body that no support ('fixed', 'normal fixed') and no obstacle
     // holds, and that touches the rest through one contact pair only, is
@@ -128,6 +152,11 @@ namespace dualcontact
     // body, along n_s (the slave nodes' contact direction) if it is the
     // slave, along -n_s if it is the master. Otherwise the contact would
     // have to pull, and the iterations would wander with the proximal term.
+    // A body without load rests (or parts from the other body). Where the
+    // pair is flat, friction alone holds the loads' tangential part, as
+    // against a plane obstacle: no more than the friction law can resist,
+    // and the threshold iteration starts from the mean pressure of the
+    // pair, since g = 0 could not hold it.
     const std::vector<unsigned int> body_of_coarse_cell =
       bodies_of_coarse_cells(triangulation);
     const unsigned int n_bodies =
@@ -172,12 +201,18 @@ namespace dualcontact
              component[k]] += system_rhs[i];
       }
 
-    // the direction each body must be pressed along, and the pairs it is
-    // in; an obstacle's contact node holds its body
+    // the direction each body must be pressed along, the pairs it is in
+    // and the measure and friction parameters of their nodes; an
+    // obstacle's contact node holds its body
     const TrilinosWrappers::MPI::Vector &bodies =
       contact_set.with_masters(body_plus_one);
     std::vector<double>       direction(n_bodies * dim, 0.);
     std::vector<unsigned int> pair_sides(n_bodies * n_bodies, 0);
+    // per body: sum_s m_s, sum_s m_s p_s over its pair's nodes
+    std::vector<double>                      measure(2 * n_bodies, 0.);
+    std::vector<double>                      largest_parameter(n_bodies, 0.);
+    std::vector<std::array<unsigned int, 2>> sides(contact_set.n_local_nodes(),
+                                                   {{n_bodies, n_bodies}});
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const ContactNode<dim> &node = contact_set.nodes[s];
@@ -190,8 +225,17 @@ namespace dualcontact
           }
         const unsigned int master =
           static_cast<unsigned int>(bodies[node.masters[0].dofs[0]]) - 1;
+        sides[s]                              = {{slave, master}};
         pair_sides[slave * n_bodies + master] = 1;
         pair_sides[master * n_bodies + slave] = 1;
+        for (const unsigned int b : {slave, master})
+          {
+            measure[2 * b] += node.weight;
+            measure[2 * b + 1] +=
+              node.weight * contact_set.friction_parameter[s];
+            largest_parameter[b] =
+              std::max(largest_parameter[b], contact_set.friction_parameter[s]);
+          }
         for (unsigned int c = 0; c < dim; ++c)
           {
             direction[slave * dim + c] += node.weight * node.normal[c];
@@ -200,8 +244,30 @@ namespace dualcontact
       }
     Utilities::MPI::sum(load, mpi_communicator, load);
     Utilities::MPI::sum(direction, mpi_communicator, direction);
+    Utilities::MPI::sum(measure, mpi_communicator, measure);
+    Utilities::MPI::max(largest_parameter, mpi_communicator, largest_parameter);
     Utilities::MPI::max(held, mpi_communicator, held);
     Utilities::MPI::max(pair_sides, mpi_communicator, pair_sides);
+
+    // how far the pair's normals of each body turn from their mean (0 on a
+    // flat pair): sum_s m_s |n_s -+ d| over its nodes
+    std::vector<double> turn(n_bodies, 0.);
+    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+      for (unsigned int side = 0; side < 2; ++side)
+        {
+          const unsigned int b = sides[s][side];
+          if (b == n_bodies)
+            continue;
+          Tensor<1, dim> d;
+          for (unsigned int c = 0; c < dim; ++c)
+            d[c] = direction[b * dim + c];
+          if (d.norm() > 0.)
+            turn[b] += contact_set.nodes[s].weight *
+                       ((side == 0 ? 1. : -1.) * contact_set.nodes[s].normal -
+                        d / d.norm())
+                         .norm();
+        }
+    Utilities::MPI::sum(turn, mpi_communicator, turn);
 
     double largest = 0.;
     for (unsigned int b = 0; b < n_bodies; ++b)
@@ -211,6 +277,7 @@ namespace dualcontact
           size += load[b * dim + c] * load[b * dim + c];
         largest = std::max(largest, std::sqrt(size));
       }
+    std::vector<double> pair_pressure(n_bodies, 0.);
     for (unsigned int b = 0; b < n_bodies; ++b)
       {
         const unsigned int partners =
@@ -227,29 +294,74 @@ namespace dualcontact
           }
         if (!(d.norm() > 0.))
           continue;
-        const double toward = f * d / d.norm();
-        if (toward > 0. && toward > 1e-10 * largest)
+        // a body without load rests, or parts from the other body
+        if (!(f.norm() > 1e-10 * largest))
           continue;
+        const double toward = f * d / d.norm();
         // the body by its boundary ids, as the user knows it
-        std::set<types::boundary_id> all_ids;
-        for (const auto &part : Utilities::MPI::all_gather(
-               mpi_communicator,
-               std::vector<types::boundary_id>(ids[b].begin(), ids[b].end())))
-          all_ids.insert(part.begin(), part.end());
-        std::string names, force;
-        for (const types::boundary_id id : all_ids)
-          names += (names.empty() ? "" : ", ") + std::to_string(id);
-        for (unsigned int c = 0; c < dim; ++c)
-          force += (c == 0 ? "(" : ", ") + format_number(f[c]);
-        throw InputError(
-          "No equilibrium: nothing holds the body with boundary ids " + names +
-            " (no 'fixed' or 'normal fixed' id, no obstacle), and its loads " +
-            force +
-            ") do not press it onto the other body of its contact pair: "
-            "only that contact could hold it, and it can only push. Hold "
-            "the body (<Boundary conditions/Conditions>) or load it toward "
-            "the other body.",
-          exit_no_equilibrium);
+        const auto body_name = [&]() {
+          std::set<types::boundary_id> all_ids;
+          for (const auto &part : Utilities::MPI::all_gather(
+                 mpi_communicator,
+                 std::vector<types::boundary_id>(ids[b].begin(), ids[b].end())))
+            all_ids.insert(part.begin(), part.end());
+          std::string names;
+          for (const types::boundary_id id : all_ids)
+            names += (names.empty() ? "" : ", ") + std::to_string(id);
+          return "the body with boundary ids " + names;
+        };
+        if (!(toward > 1e-10 * f.norm()))
+          {
+            std::string force;
+            for (unsigned int c = 0; c < dim; ++c)
+              force += (c == 0 ? "(" : ", ") + format_number(f[c]);
+            throw InputError(
+              "No equilibrium: nothing holds " + body_name() +
+                " (no 'fixed' or 'normal fixed' id, no obstacle), and its "
+                "loads " +
+                force +
+                ") do not press it onto the other body of its contact pair: "
+                "only that contact could hold it, and it can only push. Hold "
+                "the body (<Boundary conditions/Conditions>) or load it toward "
+                "the other body.",
+              exit_no_equilibrium);
+          }
+        // the tangential part, on a flat pair (a curved one also holds it
+        // by its normal pressure)
+        if (turn[b] > 1e-8 * measure[2 * b])
+          continue;
+        const double tangential = (f - toward * d / d.norm()).norm();
+        if (!(tangential > 1e-10 * f.norm()))
+          continue;
+        std::string  why;
+        const double capacity = scene.effects().friction_law().capacity(
+          measure[2 * b + 1], largest_parameter[b], toward, why);
+        if (capacity >= 0. &&
+            tangential > capacity * (1. + 1e-10) + 1e-10 * f.norm())
+          throw InputError(
+            "No equilibrium: the net tangential load " +
+              format_number(tangential) + " on " + body_name() +
+              " exceeds what friction can resist, " + format_number(capacity) +
+              " (" + why +
+              "), and only friction holds it along the other body of its "
+              "contact pair (a flat one, and nothing else holds the body). "
+              "Reduce the tangential load, raise <Friction/Coefficient>, or "
+              "hold the body (<Boundary conditions/Conditions>).",
+            exit_no_equilibrium);
+        pair_pressure[b] = toward / measure[2 * b];
+      }
+
+    // the start pressure at the nodes of each pair that holds a body by
+    // friction alone
+    if (std::any_of(pair_pressure.begin(),
+                    pair_pressure.end(),
+                    [](const double p) { return p > 0.; }))
+      {
+        held_pressure.resize(contact_set.n_local_nodes(), 0.);
+        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+          for (const unsigned int b : sides[s])
+            if (b < n_bodies)
+              held_pressure[s] = std::max(held_pressure[s], pair_pressure[b]);
       }
   }
 
@@ -286,7 +398,10 @@ namespace dualcontact
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const ContactNode<dim> &node = contact_set.nodes[s];
-        off_plane                    = off_plane || node.gap0 > flat;
+        // the obstacle's nodes: a pair's are inside the mesh it holds
+        if (!node.masters.empty())
+          continue;
+        off_plane = off_plane || node.gap0 > flat;
         std::array<double, 2> p{};
         for (unsigned int k = 0; k < dim - 1; ++k)
           p[k] = contact_set.tangents[k] * (node.position - origin);
@@ -403,14 +518,14 @@ namespace dualcontact
   ContactProblem<2>::net_load(const Tensor<1, 2> &direction) const;
   template double
   ContactProblem<3>::net_load(const Tensor<1, 3> &direction) const;
-  template double
+  template std::vector<double>
   ContactProblem<2>::check_equilibrium() const;
-  template double
+  template std::vector<double>
   ContactProblem<3>::check_equilibrium() const;
   template void
-  ContactProblem<2>::check_pair_bodies() const;
+  ContactProblem<2>::check_pair_bodies(std::vector<double> &) const;
   template void
-  ContactProblem<3>::check_pair_bodies() const;
+  ContactProblem<3>::check_pair_bodies(std::vector<double> &) const;
   template void
   ContactProblem<2>::check_moment(const LoadBalance &balance) const;
   template void

@@ -77,12 +77,40 @@ namespace dualcontact
         record.on_slave_body[c]  = on_slave[c];
         record.on_master_body[c] = on_master[c];
       }
-    // the contact force is the resultant's component along Gamma_C's mean
-    // direction, the direction of the applied load it balances: a sum of
-    // the pressures m_s l1_s would also count the parts of the normals that
-    // cancel (a curved zone), or that point elsewhere (a node beside an
-    // obstacle's corner)
-    record.contact_force = (on_obstacle + on_master) * contact_set.normal;
+    // the obstacle's force is the resultant's component along the mean
+    // direction of its nodes, the direction of the applied load it
+    // balances: a sum of the pressures m_s l1_s would also count the parts
+    // of the normals that cancel (a curved zone), or that point elsewhere
+    // (a node beside an obstacle's corner). Each pair's the same along its
+    // own direction, the resultant of its normal forces sum_s m_s l1_s n_s
+    // (without pressure the mean normal of its slave nodes): pairs that
+    // face other ways (a stack on the plane whose pair's slave is the lower
+    // body's top) must not cancel.
+    record.obstacle_force = on_obstacle * contact_set.normal;
+    record.contact_force  = record.obstacle_force;
+    for (const auto &[slave_id, master_id] : scene.contact_pairs())
+      {
+        Tensor<1, dim> force, pressed, facing;
+        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+          if (contact_set.nodes[s].pair_slave_id == slave_id)
+            {
+              const ContactNode<dim> &node = contact_set.nodes[s];
+              force += contact_set.nodal_force(s);
+              pressed += node.weight * contact_set.l1[s] * node.normal;
+              facing += node.weight * node.normal;
+            }
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            force[c]   = Utilities::MPI::sum(force[c], mpi_communicator);
+            pressed[c] = Utilities::MPI::sum(pressed[c], mpi_communicator);
+            facing[c]  = Utilities::MPI::sum(facing[c], mpi_communicator);
+          }
+        const Tensor<1, dim> direction = pressed.norm() > 0. ? pressed : facing;
+        const double         pair_force =
+          direction.norm() > 0. ? force * direction / direction.norm() : 0.;
+        record.pair_force.push_back(pair_force);
+        record.contact_force += pair_force;
+      }
     // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s),
     // and its part in the tangent plane of Gamma_C's mean direction
     const Tensor<1, dim> resultant   = -on_obstacle;
@@ -217,20 +245,29 @@ namespace dualcontact
   ContactProblem<dim>::compute_reactions(const ContactZoneRecord &zone) const
   {
     TimerOutput::Scope t(computing_timer, "postprocess");
-    // one more pass over the cells: only where there are supports
-    ReactionRecord record;
+    // one more pass over the cells: where there are supports, or several
+    // bodies to balance one by one
+    ReactionRecord                record;
+    const bool                    pairs = contact_set.has_pairs();
+    TrilinosWrappers::MPI::Vector contact_forces;
     if (scene.ids_with(BoundaryCondition::fixed).empty() &&
-        scene.ids_with(BoundaryCondition::normal_fixed).empty())
+        scene.ids_with(BoundaryCondition::normal_fixed).empty() && !pairs)
       record.applied_load = applied_load;
     else
-      record = dualcontact::compute_reactions(mapping,
-                                              dof_handler,
-                                              scene,
-                                              constraints,
-                                              hanging_node_constraints,
-                                              solution);
+      {
+        contact_forces.reinit(locally_owned_dofs, mpi_communicator);
+        if (scene.effects().contact)
+          contact_set.add_nodal_forces(contact_forces);
+        record = dualcontact::compute_reactions(mapping,
+                                                dof_handler,
+                                                scene,
+                                                constraints,
+                                                hanging_node_constraints,
+                                                solution,
+                                                &contact_forces);
+      }
 
-    // Equilibrium of the whole body: contact force, reactions and applied
+    // Equilibrium of the whole mesh: contact force, reactions and applied
     // loads sum to zero, up to the solver tolerances.
     std::array<double, 3> sum   = record.applied_load;
     double                scale = std::sqrt(norm_square(record.applied_load));
@@ -243,6 +280,20 @@ namespace dualcontact
     for (unsigned int c = 0; c < dim; ++c)
       sum[c] += zone.resultant[c];
     scale = std::max(scale, std::sqrt(norm_square(zone.resultant)));
+    // and of each body, with the contact forces on it (the obstacle's and
+    // the other bodies')
+    std::vector<std::array<double, 3>> body_sums;
+    for (unsigned int b = 0; b < record.on_body.size(); ++b)
+      {
+        std::array<double, 3> &body = body_sums.emplace_back();
+        for (unsigned int c = 0; c < dim; ++c)
+          body[c] = record.load_on_body[b][c] + record.on_body[b][c] +
+                    record.contact_on_body[b][c];
+        for (const auto *force : {&record.load_on_body[b],
+                                  &record.on_body[b],
+                                  &record.contact_on_body[b]})
+          scale = std::max(scale, std::sqrt(norm_square(*force)));
+      }
     // along a load path, not below the previous step's contact force: a
     // step that unloads everything balances to the round-off of the path
     scale = std::max(scale, previous_size.contact_force);
@@ -252,11 +303,14 @@ namespace dualcontact
     // clear of the obstacle, two bodies lifted apart), every force is the
     // round-off of that motion, and their sum relative to themselves is
     // 1 (doc/theory.md §8)
-    scale = std::max(scale,
+    scale          = std::max(scale,
                      1e-2 * parameters.material.stiffest().youngs_modulus *
                        solution.linfty_norm() *
                        std::pow(scene.characteristic_length(), dim - 2));
-    record.imbalance = scale > 0. ? std::sqrt(norm_square(sum)) / scale : 0.;
+    double largest = std::sqrt(norm_square(sum));
+    for (const auto &body : body_sums)
+      largest = std::max(largest, std::sqrt(norm_square(body)));
+    record.imbalance = scale > 0. ? largest / scale : 0.;
     return record;
   }
 

@@ -8,6 +8,7 @@
 #include <dualcontact/discretization.h>
 #include <dualcontact/input_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -226,15 +227,29 @@ namespace dualcontact
         exit_invalid_value);
 
     // the direction of first contact: the mean normal of the nodes closest
-    // to the obstacle (all nodes on a plane parallel to a plane obstacle)
+    // to the obstacle (all nodes on a plane parallel to a plane obstacle);
+    // a contact pair's nodes face another body, and count only where the
+    // obstacle has none (a pair's slave on the top of a body that stands
+    // on the plane would cancel the plane's normal)
+    const bool on_obstacle =
+      Utilities::MPI::logical_or(std::any_of(nodes.begin(),
+                                             nodes.end(),
+                                             [](const auto &node) {
+                                               return node.masters.empty();
+                                             }),
+                                 comm);
+    const auto counts = [on_obstacle](const ContactNode<dim> &node) {
+      return !on_obstacle || node.masters.empty();
+    };
     double closest = std::numeric_limits<double>::max();
     for (const auto &node : nodes)
-      closest = std::min(closest, node.gap0);
+      if (counts(node))
+        closest = std::min(closest, node.gap0);
     closest                  = Utilities::MPI::min(closest, comm);
     const double   tolerance = 1e-8 * scene.characteristic_length();
     Tensor<1, dim> mean;
     for (const auto &node : nodes)
-      if (node.gap0 <= closest + tolerance)
+      if (counts(node) && node.gap0 <= closest + tolerance)
         mean += node.weight * node.normal;
     for (unsigned int d = 0; d < dim; ++d)
       mean[d] = Utilities::MPI::sum(mean[d], comm);
@@ -369,6 +384,41 @@ namespace dualcontact
         if (friction)
           y[s] = l2[s] + r_t * slip(w, s);
       }
+  }
+
+  template <int dim>
+  void
+  ContactSet<dim>::add_nodal_forces(TrilinosWrappers::MPI::Vector &forces) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  values;
+    for (unsigned int s = 0; s < nodes.size(); ++s)
+      {
+        const Tensor<1, dim> force = nodal_force(s);
+        dofs.assign(nodes[s].dofs.begin(), nodes[s].dofs.end());
+        values.assign(force.begin_raw(), force.end_raw());
+        for (const MasterTerm<dim> &master : nodes[s].masters)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              dofs.push_back(master.dofs[c]);
+              values.push_back(-master.coefficient * force[c]);
+            }
+        forces.add(dofs, values);
+      }
+    forces.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  IndexSet
+  ContactSet<dim>::master_dofs(const types::global_dof_index n_dofs) const
+  {
+    IndexSet dofs(n_dofs);
+    for (const ContactNode<dim> &node : nodes)
+      for (const MasterTerm<dim> &master : node.masters)
+        for (const types::global_dof_index dof : master.dofs)
+          dofs.add_index(dof);
+    dofs.compress();
+    return dofs;
   }
 
   template class ContactSet<2>;

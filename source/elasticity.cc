@@ -245,7 +245,8 @@ namespace dualcontact
                     const Scene<dim>                &scene,
                     const AffineConstraints<double> &constraints,
                     const AffineConstraints<double> &hanging_node_constraints,
-                    const TrilinosWrappers::MPI::Vector &solution)
+                    const TrilinosWrappers::MPI::Vector &solution,
+                    const TrilinosWrappers::MPI::Vector *contact_forces)
   {
     // The residual of the unconstrained equations, R = A u - f, is zero at
     // every free DoF; at a constrained one it is the force the support
@@ -272,7 +273,8 @@ namespace dualcontact
       *std::max_element(body_of_coarse_cell.begin(), body_of_coarse_cell.end());
     std::vector<std::array<double, 3>> load_on_body(n_bodies),
       reaction_on_body(n_bodies);
-    std::vector<unsigned int> body_of_dof(owned.n_elements(), 0);
+    std::vector<unsigned int> body_of_dof(owned.n_elements(), 0),
+      component_of_dof(owned.n_elements(), 0);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -287,12 +289,19 @@ namespace dualcontact
           if (n_bodies > 1)
             {
               local.add_resultant(load_on_body[body]);
-              for (const types::global_dof_index i : dof_indices)
-                if (owned.is_element(i))
-                  body_of_dof[owned.index_within_set(i)] = body;
+              for (unsigned int k = 0; k < n_dofs; ++k)
+                if (owned.is_element(dof_indices[k]))
+                  {
+                    const auto index   = owned.index_within_set(dof_indices[k]);
+                    body_of_dof[index] = body;
+                    component_of_dof[index] =
+                      dof_handler.get_fe().system_to_component_index(k).first;
+                  }
             }
         }
     residual.compress(VectorOperation::add);
+    if (contact_forces != nullptr)
+      residual += *contact_forces;
     for (unsigned int c = 0; c < dim; ++c)
       record.applied_load[c] = Utilities::MPI::sum(load[c], comm);
 
@@ -345,17 +354,26 @@ namespace dualcontact
               reaction[c] = Utilities::MPI::sum(sum, comm);
             }
         }
+    // the contact forces on each body: -B^T lambda on its DoFs
+    std::vector<std::array<double, 3>> contact_on_body(n_bodies);
+    if (n_bodies > 1 && contact_forces != nullptr)
+      for (unsigned int k = 0; k < owned.n_elements(); ++k)
+        contact_on_body[body_of_dof[k]][component_of_dof[k]] -=
+          (*contact_forces)[owned.nth_index_in_set(k)];
     if (n_bodies > 1)
       for (unsigned int b = 0; b < n_bodies; ++b)
         {
           record.on_body.emplace_back();
           record.load_on_body.emplace_back();
+          record.contact_on_body.emplace_back();
           for (unsigned int c = 0; c < dim; ++c)
             {
               record.on_body[b][c] =
                 Utilities::MPI::sum(reaction_on_body[b][c], comm);
               record.load_on_body[b][c] =
                 Utilities::MPI::sum(load_on_body[b][c], comm);
+              record.contact_on_body[b][c] =
+                Utilities::MPI::sum(contact_on_body[b][c], comm);
             }
         }
     return record;
@@ -651,7 +669,8 @@ namespace dualcontact
     const Scene<dim> &,                                                               \
     const AffineConstraints<double> &,                                                \
     const AffineConstraints<double> &,                                                \
-    const TrilinosWrappers::MPI::Vector &);                                           \
+    const TrilinosWrappers::MPI::Vector &,                                            \
+    const TrilinosWrappers::MPI::Vector *);                                           \
   template double potential_energy<dim>(                                              \
     const Mapping<dim> &,                                                             \
     const DoFHandler<dim> &,                                                          \

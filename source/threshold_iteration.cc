@@ -24,7 +24,7 @@ namespace dualcontact
     ContactSet<dim>               &contact,
     TrilinosWrappers::MPI::Vector &v,
     IterationObserver             *observer,
-    const double                   held_by_friction_pressure,
+    const std::vector<double>     &held_by_friction_pressure,
     const WarmStart                start,
     ContactStatistics             &total)
   {
@@ -32,22 +32,27 @@ namespace dualcontact
       if (observer != nullptr)
         observer->note(text);
     };
+    double held_pressure = 0.;
+    for (const double p : held_by_friction_pressure)
+      held_pressure = std::max(held_pressure, p);
+    held_pressure =
+      Utilities::MPI::max(held_pressure, v.get_mpi_communicator());
     if (start != WarmStart::cold)
       say(std::string("threshold iteration: g^0 carried from the previous ") +
           (start == WarmStart::previous_mesh ? "mesh" : "load step"));
-    else if (held_by_friction_pressure > 0.)
+    else if (held_pressure > 0.)
       {
         std::ostringstream text;
         text << "threshold iteration: only friction holds the body "
                 "tangentially, so g^0 is the threshold at the mean pressure "
                 "N / |Gamma_C| = "
-             << held_by_friction_pressure
+             << held_pressure
              << " (g^0 = 0 could not hold the tangential load)";
         say(text.str());
         for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
           contact.threshold[s] =
             contact.law->threshold(contact.friction_parameter[s],
-                                   held_by_friction_pressure);
+                                   held_by_friction_pressure[s]);
       }
     else if (parameters.initial_threshold == InitialThreshold::frictionless)
       {
@@ -65,12 +70,13 @@ namespace dualcontact
 
   template <int dim>
   ContactStatistics
-  ThresholdIteration<dim>::solve(const ContactSystem           &system,
-                                 ContactSet<dim>               &contact,
-                                 TrilinosWrappers::MPI::Vector &v,
-                                 IterationObserver             *observer,
-                                 const double    held_by_friction_pressure,
-                                 const WarmStart start)
+  ThresholdIteration<dim>::solve(
+    const ContactSystem           &system,
+    ContactSet<dim>               &contact,
+    TrilinosWrappers::MPI::Vector &v,
+    IterationObserver             *observer,
+    const std::vector<double>     &held_by_friction_pressure,
+    const WarmStart                start)
   {
     if (!contact.friction || !contact.law->depends_on_pressure())
       return uzawa.solve(system, contact, v, observer);

@@ -86,10 +86,13 @@ namespace dualcontact
 
     /**
      * The constraints of the mesh: hanging nodes, then the prescribed
-     * displacements at the scene's time, then the sliders.
+     * displacements at the scene's time, then the sliders. With
+     * `couple_masters` (contact pairs, after the pairing) also those of the
+     * master DoFs that this rank's slave nodes couple to, from their owners
+     * (collective).
      */
     void
-    make_constraints();
+    make_constraints(const bool couple_masters = false);
 
     /**
      * Nested iteration: interpolate v, the multipliers and the threshold
@@ -397,18 +400,23 @@ namespace dualcontact
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
     SolveRecord
     solve_contact(TrilinosWrappers::MPI::Vector &v);
-    /** Throws if no equilibrium can exist; returns N / |Gamma_C| if only
-     * friction holds a tangential load (see ThresholdIteration), else 0. */
-    double
+    /** Throws if no equilibrium can exist; returns, for each contact node
+     * of this rank, N / |Gamma_C| of the contact that holds its body where
+     * only friction holds a tangential load (see ThresholdIteration), else
+     * 0 (an empty vector if at no node). */
+    std::vector<double>
     check_equilibrium() const;
     /** Throws if only the contact holds the body on a plane and the loads'
      * moment needs a centre of pressure outside the contact boundary. */
     void
     check_moment(const LoadBalance &balance) const;
     /** Throws if a body that no support and no obstacle holds, in one
-     * contact pair, is not pressed onto the other body by its loads. */
+     * contact pair, is not pressed onto the other body by its loads, or if
+     * the pair is flat and friction cannot resist the loads' tangential
+     * part; adds N / |Gamma_pair| to `held_by_friction_pressure` at the
+     * pair's nodes where only friction holds such a body tangentially. */
     void
-    check_pair_bodies() const;
+    check_pair_bodies(std::vector<double> &held_by_friction_pressure) const;
     /** Throws (a runtime failure) if the solution does not balance the
      * loads to the solver tolerances. */
     void
@@ -492,7 +500,7 @@ namespace dualcontact
     // the resultant of the applied loads (tractions, body force), from the
     // assembly
     std::array<double, 3> applied_load{};
-    double                held_by_friction_pressure = 0.;
+    std::vector<double>   held_by_friction_pressure;
     // the rigid motions that nothing holds (ContactSystem::free_motions),
     // and which of them keep the start's value
     // (ContactSystem::anchored_at_start)

@@ -144,6 +144,13 @@ namespace dualcontact
     const TrilinosWrappers::MPI::Vector &
     with_masters(const TrilinosWrappers::MPI::Vector &v) const;
 
+    /**
+     * The DoFs of the master nodes of this rank's contact nodes, in an
+     * index space of `n_dofs`.
+     */
+    IndexSet
+    master_dofs(const types::global_dof_index n_dofs) const;
+
     /** Whether some contact node of any rank lies on a contact pair. */
     bool
     has_pairs() const
@@ -359,6 +366,14 @@ namespace dualcontact
         force += l2[s][k] * nodes[s].tangents[k];
       return nodes[s].weight * force;
     }
+
+    /**
+     * Add every node's nodal_force() to `forces` at its DoFs, and minus c_sj
+     * times it at the DoFs of its masters: B^T lambda, the forces the bodies
+     * exert on the contact at their DoFs (owned entries; compressed here).
+     */
+    void
+    add_nodal_forces(TrilinosWrappers::MPI::Vector &forces) const;
 
     /**
      * n = -m and its tangent basis at a point x of Gamma_C (between nodes,

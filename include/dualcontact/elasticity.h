@@ -60,16 +60,22 @@ namespace dualcontact
    * them their masters on that boundary carry (so that reactions, contact
    * force and loads balance exactly); a DoF two supports share counts for
    * the first. Also the resultant of the applied loads f. `solution` is
-   * ghosted.
+   * ghosted. `contact_forces` (owned), if given, is B^T lambda, the forces
+   * the body exerts on the contact at its DoFs: at a DoF that a support
+   * constrains and the contact also acts on (a slider's end on Gamma_C
+   * with friction) A u - f holds both, and the support's part is
+   * A u - f + B^T lambda.
    */
   template <int dim>
   ReactionRecord
-  compute_reactions(const Mapping<dim>              &mapping,
-                    const DoFHandler<dim>           &dof_handler,
-                    const Scene<dim>                &scene,
-                    const AffineConstraints<double> &constraints,
-                    const AffineConstraints<double> &hanging_node_constraints,
-                    const TrilinosWrappers::MPI::Vector &solution);
+  compute_reactions(
+    const Mapping<dim>                  &mapping,
+    const DoFHandler<dim>               &dof_handler,
+    const Scene<dim>                    &scene,
+    const AffineConstraints<double>     &constraints,
+    const AffineConstraints<double>     &hanging_node_constraints,
+    const TrilinosWrappers::MPI::Vector &solution,
+    const TrilinosWrappers::MPI::Vector *contact_forces = nullptr);
 
   /**
    * The potential energy J(u) = 1/2 a(u, u) - f(u) of the ghosted

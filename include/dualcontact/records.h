@@ -67,9 +67,15 @@ namespace dualcontact
   /** measure_contact_zone(): the contact zone at convergence. */
   struct ContactZoneRecord
   {
-    // the force of the body on the obstacle, and of the slave bodies of
-    // contact pairs on their masters, along Gamma_C's mean normal
+    // obstacle_force plus the pair_force of every pair
     double contact_force = 0.;
+    // the force of the body on the obstacle along the mean normal of the
+    // obstacle's contact nodes
+    double obstacle_force = 0.;
+    // each contact pair's (in the order of <Boundary conditions/Contact
+    // pairs>): the force of its slave body on its master body along the
+    // mean normal of its slave nodes (> 0 where they press)
+    std::vector<double> pair_force;
     // the force of the foundation on the body, a vector (a load of the
     // mesh; the forces of contact pairs are inside it)
     std::array<double, 3> resultant{};
@@ -142,8 +148,12 @@ namespace dualcontact
     // the applied loads of each body (the connected parts of the mesh,
     // numbered as bodies_of_coarse_cells() numbers them, scene.h)
     std::vector<std::array<double, 3>> on_body, load_on_body;
+    // and the contact forces on each body (from the obstacle and the other
+    // bodies)
+    std::vector<std::array<double, 3>> contact_on_body;
     // |contact force + reactions + applied loads| / the largest of them:
-    // the equilibrium of the whole body (0 when it holds exactly)
+    // the equilibrium of the whole mesh and, where it has several bodies,
+    // of each body (the largest; 0 when it holds exactly)
     double imbalance = 0.;
   };
 

@@ -44,9 +44,11 @@ namespace dualcontact
      * previous mesh or load step. If only friction holds the body
      * tangentially under a tangential load, the problems with g^0 = 0 have
      * no solution (nested) or let the body slide first (merged); the caller
-     * then passes the mean contact pressure N / |Gamma_C| as
-     * `held_by_friction_pressure` and both strategies start from the
-     * threshold at that pressure, which holds the load (doc/theory.md §8).
+     * then passes, for each contact node of this rank, the mean contact
+     * pressure N / |Gamma_C| of the contact that holds its body (0 at the
+     * other nodes) as `held_by_friction_pressure`, and both strategies
+     * start from the threshold at that pressure, which holds the load
+     * (doc/theory.md §8); empty or all 0 on every rank: none.
      * Every step of every loop is reported to `observer`.
      */
     ContactStatistics
@@ -54,7 +56,7 @@ namespace dualcontact
           ContactSet<dim>               &contact,
           TrilinosWrappers::MPI::Vector &v,
           IterationObserver             *observer                  = nullptr,
-          const double                   held_by_friction_pressure = 0.,
+          const std::vector<double>     &held_by_friction_pressure = {},
           const WarmStart                start = WarmStart::cold);
 
   private:
@@ -64,7 +66,7 @@ namespace dualcontact
                       ContactSet<dim>               &contact,
                       TrilinosWrappers::MPI::Vector &v,
                       IterationObserver             *observer,
-                      const double                   held_by_friction_pressure,
+                      const std::vector<double>     &held_by_friction_pressure,
                       const WarmStart                start,
                       ContactStatistics             &total);
 

@@ -503,8 +503,10 @@ namespace dualcontact
     /**
      * Contact pairs: slave_body_force_x, _y (_z) and master_body_force_x,
      * _y (_z), the contact forces on the slave and on the master bodies
-     * (doc/two_bodies.md), equal and opposite; time_pairing, the wall time
-     * of pairing the surfaces on the mesh [s].
+     * (doc/two_bodies.md), equal and opposite; contact_force apart,
+     * obstacle_contact_force (with an obstacle too) and pair_S_M_force for
+     * each pair, each along the mean normal of its own nodes;
+     * time_pairing, the wall time of pairing the surfaces on the mesh [s].
      */
     template <int dim>
     class PairForces : public ReportQuantity<dim>
@@ -530,12 +532,34 @@ namespace dualcontact
           t.add(467,
                 std::string("master_body_force_") + axes[c],
                 r.zone.on_master_body[c]);
+        // contact_force apart: the obstacle's and each pair's
+        if (this->scene.effects().obstacle_contact)
+          t.add(468, "obstacle_contact_force", r.zone.obstacle_force);
+        unsigned int p = 0;
+        for (const auto &[slave_id, master_id] : this->scene.contact_pairs())
+          t.add(469,
+                "pair_" + std::to_string(slave_id) + "_" +
+                  std::to_string(master_id) + "_force",
+                p < r.zone.pair_force.size() ? r.zone.pair_force[p++] : 0.);
         t.add(485, "time_pairing", r.solve.pairing_time);
       }
 
       void
       print(const CycleResult &r, ScreenLines &lines) const override
       {
+        // the total contact force apart: the obstacle's and each pair's,
+        // each along its own nodes' mean normal
+        std::vector<std::string> parts;
+        if (this->scene.effects().obstacle_contact)
+          parts.push_back("on the obstacle " +
+                          significant(r.zone.obstacle_force));
+        unsigned int p = 0;
+        for (const auto &[slave_id, master_id] : this->scene.contact_pairs())
+          if (p < r.zone.pair_force.size())
+            parts.push_back("pair " + std::to_string(slave_id) + ": " +
+                            std::to_string(master_id) + " " +
+                            significant(r.zone.pair_force[p++]));
+        lines.add(44, wrap("   contact force: ", parts, ", ", "     "));
         std::string slave, master;
         double      sum = 0., size = 0.;
         for (unsigned int c = 0; c < dim; ++c)

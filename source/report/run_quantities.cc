@@ -303,14 +303,18 @@ namespace dualcontact
               t.add(451,
                     body + "_reaction_" + axes[c],
                     r.reactions.on_body[b][c]);
+              if (b < r.reactions.contact_on_body.size())
+                t.add(452,
+                      body + "_contact_" + axes[c],
+                      r.reactions.contact_on_body[b][c]);
             }
       }
 
       void
       print(const CycleResult &r, ScreenLines &lines) const override
       {
-        // with the contact force they balance
-        if (r.reactions.on_id.empty())
+        // with the contact force they balance (each body of several)
+        if (r.reactions.on_id.empty() && r.reactions.on_body.empty())
           return;
         const auto vector = [](const std::array<double, 3> &f) {
           std::string s = "(" + significant(f[0]);
@@ -335,9 +339,13 @@ namespace dualcontact
                   wrap("   reactions on the body: ", items, "; ", "     "));
         std::vector<std::string> bodies;
         for (unsigned int b = 0; b < r.reactions.on_body.size(); ++b)
-          bodies.push_back("body " + std::to_string(b) + ": reactions " +
-                           vector(r.reactions.on_body[b]) + ", loads " +
-                           vector(r.reactions.load_on_body[b]));
+          bodies.push_back(
+            "body " + std::to_string(b) + ": reactions " +
+            vector(r.reactions.on_body[b]) + ", loads " +
+            vector(r.reactions.load_on_body[b]) +
+            (b < r.reactions.contact_on_body.size() ?
+               ", contact " + vector(r.reactions.contact_on_body[b]) :
+               std::string()));
         if (!bodies.empty())
           lines.add(131, wrap("   per body: ", bodies, "; ", "     "));
       }

@@ -101,8 +101,8 @@ namespace
     return std::string("subsection Geometry\n  set Dimension = ") +
            std::to_string(dim) +
            "\n  set Type = rectangle\n  set Upper right corner = " +
-           (dim == 2 ? "1, 4" : "1, 1, 4") + "\n  set Subdivisions = " +
-           (dim == 2 ? "2, 8" : "2, 2, 8") +
+           (dim == 2 ? "1, 4" : "1, 1, 4") +
+           "\n  set Subdivisions = " + (dim == 2 ? "2, 8" : "2, 2, 8") +
            "\nend\nsubsection Material\n  set Young's modulus = 1000\n  set "
            "Poisson's ratio = 0.3\nend\nsubsection Boundary conditions\n  "
            "set Conditions = " +
@@ -171,7 +171,7 @@ TEST_CASE("A clamped body moved without touching anything carries no force: "
   // every force is the round-off of a rigid motion; the balance measures
   // it against the force that would strain the body as much as it moves
   {
-    Run run("",
+    Run                run("",
             clamped_block(2, "0; -0.01") +
               "subsection Foundation\n  set Point = 0, -0.02\nend\n");
     const CycleResult &r = run.last();
@@ -180,12 +180,12 @@ TEST_CASE("A clamped body moved without touching anything carries no force: "
     CHECK(std::abs(r.reactions.on_id.at(3)[1]) < 1e-8);
   }
   {
-    const Run run("two_cylinders.prm",
+    const Run          run("two_cylinders.prm",
                   "subsection Refinement\n  set Number of cycles = 1\n  set "
-                  "Initial global refinement = 2\nend\nsubsection Geometry\n  "
-                  "set Pre-refinement steps = 2\nend\nsubsection Boundary "
-                  "conditions\n  set Conditions = 1: fixed, 3: fixed\n  set "
-                  "Tractions =\n  set Displacements = 1: 0; 0.01\nend\n");
+                           "Initial global refinement = 2\nend\nsubsection Geometry\n  "
+                           "set Pre-refinement steps = 2\nend\nsubsection Boundary "
+                           "conditions\n  set Conditions = 1: fixed, 3: fixed\n  set "
+                           "Tractions =\n  set Displacements = 1: 0; 0.01\nend\n");
     const CycleResult &r = run.last();
     CHECK(r.zone.contact_force == 0.);
     CHECK(r.reactions.imbalance < 1e-7);

@@ -473,11 +473,12 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
 }
 
 TEST_CASE("A body that only its contact pair could hold, not pressed onto "
-          "the other body by its loads, is refused (exit 7)",
+          "the other body by its loads, is refused (exit 7); without loads "
+          "it rests",
           "[pairs][errors]")
 {
   // prm/two_cylinders.prm: nothing holds the upper body but the contact
-  for (const std::string traction : {"0; 4.3", "0; 0", "1; 0"})
+  for (const std::string traction : {"0; 4.3", "1; 0"})
     {
       const CaughtError error = catch_input_error([&] {
         const Run run("two_cylinders.prm",
@@ -490,6 +491,13 @@ TEST_CASE("A body that only its contact pair could hold, not pressed onto "
       CHECK(contains(error.message,
                      "nothing holds the body with boundary ids 0, 1"));
     }
+  // a body without load is in equilibrium at u = 0, touching the other
+  const Run run("two_cylinders.prm",
+                "subsection Boundary conditions\n  set Tractions = 1: 0; "
+                "0\nend\nsubsection Refinement\n  set Number of cycles = "
+                "1\nend\n");
+  CHECK(run.last().zone.contact_force == 0.);
+  CHECK(run.problem->displacement().linfty_norm() < 1e-12);
 }
 
 namespace
@@ -831,4 +839,148 @@ TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz between two identical "
                                     << work << ", closed form " << closed_form);
   CHECK(std::abs(work - dissipated) <= 0.02 * dissipated);
   CHECK(std::abs(dissipated - closed_form) <= 0.05 * closed_form);
+}
+
+namespace
+{
+  // Two blocks on non-matching meshes, the upper one's bottom (id 5) the
+  // slave, E = 1000, nu = 0.3; the conditions and loads come with each test
+  std::string
+  two_blocks(const std::string &boundary,
+             const std::string &more         = "",
+             const std::string &subdivisions = "10, 4")
+  {
+    return "subsection Geometry\n  set Type = two blocks\n  set Lower left "
+           "corner = 0, 0\n  set Upper right corner = 2, 2\n  set "
+           "Subdivisions = " +
+           subdivisions +
+           "\n  set Upper subdivisions = 7, 3\nend\n"
+           "subsection Material\n  set Young's modulus = 1000\n  set "
+           "Poisson's ratio = 0.3\nend\nsubsection Boundary conditions\n" +
+           boundary + "end\n" + more;
+  }
+
+  const std::string coulomb =
+    "subsection Friction\n  set Law = coulomb\n  set Coefficient = 0.4\nend\n";
+} // namespace
+
+TEST_CASE("A slider on one side of two blocks with friction between them: "
+          "the slider's reaction takes the tangential multiplier of the "
+          "contact nodes it holds, and every body balances",
+          "[pairs]")
+{
+  // id 0 (the left sides of both blocks) holds the x-motion of the pair's
+  // end nodes, slave and master: the friction there acts on DoFs that the
+  // slider constrains, which its reaction must count
+  const Run          run("",
+                two_blocks("  set Conditions = 0: normal fixed, 2: fixed, 3: "
+                                    "traction\n  set Tractions = 3: 0; -1\n  set "
+                                    "Contact pairs = 5: 4\n",
+                           coulomb));
+  const CycleResult &r = run.last();
+  INFO("imbalance " << r.reactions.imbalance << ", slider "
+                    << r.reactions.on_id.at(0)[0]);
+  CHECK(r.reactions.imbalance < 1e-10);
+  // the slider holds the upper block sideways against the friction of
+  // its end node (0.0455 measured)
+  REQUIRE(r.reactions.on_body.size() == 2);
+  CHECK(std::abs(r.reactions.on_body[1][0]) > 1e-2);
+  for (unsigned int b = 0; b < 2; ++b)
+    for (unsigned int c = 0; c < 2; ++c)
+      CHECK(std::abs(r.reactions.on_body[b][c] +
+                     r.reactions.load_on_body[b][c] +
+                     r.reactions.contact_on_body[b][c]) < 1e-10);
+}
+
+TEST_CASE("Two blocks stacked on the plane: the obstacle's force and the "
+          "pair's apart, whichever side is the slave",
+          "[pairs]")
+{
+  // the pair's normal (the lower block's top, or the upper one's bottom)
+  // and the plane's must not be averaged: the plane holds 2, the pair 2
+  for (const std::string subdivisions : {"3, 4", "4, 4"})
+    for (const std::string pair : {"5: 4", "4: 5"})
+      {
+        const Run          run("",
+                      two_blocks("  set Conditions = 2: contact, 3: "
+                                          "traction\n  set Tractions = 3: 0; -1\n  set "
+                                          "Contact pairs = " +
+                                   pair + "\n",
+                                 "",
+                                 subdivisions));
+        const CycleResult &r = run.last();
+        INFO("lower block " << subdivisions << ", pair " << pair);
+        CHECK(r.zone.obstacle_force == Approx(2.).epsilon(1e-10));
+        REQUIRE(r.zone.pair_force.size() == 1);
+        CHECK(r.zone.pair_force[0] == Approx(2.).epsilon(1e-10));
+        CHECK(r.zone.contact_force == Approx(4.).epsilon(1e-10));
+        CHECK(r.reactions.imbalance < 1e-10);
+        REQUIRE(r.reactions.contact_on_body.size() == 2);
+        // the lower block: the plane's 2 up, the upper block's 2 down
+        CHECK(std::abs(r.reactions.contact_on_body[0][1]) < 1e-10);
+        CHECK(r.reactions.contact_on_body[1][1] == Approx(2.).epsilon(1e-10));
+      }
+}
+
+TEST_CASE("A block held sideways by friction alone on another: every start "
+          "of the threshold iteration solves it, and the tangential load "
+          "friction cannot hold is refused before the solve (exit 7)",
+          "[pairs][errors]")
+{
+  // the top traction (0.2, -1) on the upper block: Q / (F N) = 0.5 at F =
+  // 0.4; g = 0 (nested) or the frictionless pressure could not hold it,
+  // and the iteration starts from the mean pressure of the pair
+  const std::string scene =
+    two_blocks("  set Conditions = 2: fixed, 3: traction\n  set Tractions = "
+               "3: 0.2; -1\n  set Contact pairs = 5: 4\n");
+  const Run          merged("", scene + coulomb);
+  const CycleResult &m = merged.last();
+  CHECK(m.reactions.imbalance < 1e-10);
+  for (const std::string start : {"  set Threshold iteration = nested\n",
+                                  "  set Initial threshold = frictionless\n"})
+    {
+      const Run          run("",
+                    scene +
+                      "subsection Friction\n  set Law = coulomb\n  set "
+                               "Coefficient = 0.4\n" +
+                      start + "end\n");
+      const CycleResult &r = run.last();
+      INFO(start);
+      CHECK(r.reactions.imbalance < 1e-10);
+      CHECK(r.zone.tangential_force == Approx(0.4).epsilon(1e-6));
+      CHECK(r.zone.contact_force == Approx(m.zone.contact_force).epsilon(1e-8));
+    }
+  // the tangential load 0.4 against F N = 0.2 and 0 (frictionless)
+  for (const std::string friction :
+       {"subsection Friction\n  set Law = coulomb\n  set Coefficient = "
+        "0.1\nend\n",
+        "subsection Friction\n  set Law = none\n  set Coefficient = 0\nend\n"})
+    {
+      const CaughtError error =
+        catch_input_error([&] { const Run run("", scene + friction); });
+      INFO(friction << error.message);
+      CHECK(error.thrown);
+      CHECK(error.code == exit_no_equilibrium);
+      CHECK(contains(error.message,
+                     "the net tangential load 4.00e-01 on the body with "
+                     "boundary ids 0, 1, 3, 5 exceeds what friction can "
+                     "resist"));
+    }
+}
+
+TEST_CASE("A load path that unloads two bodies to zero: the last step rests "
+          "at zero contact force",
+          "[pairs][path]")
+{
+  const Run   run("",
+                two_blocks("  set Conditions = 2: fixed, 3: traction\n  set "
+                             "Tractions = 3: 0; -if(t <= 1, t, 2 - t)\n  set "
+                             "Contact pairs = 5: 4\n",
+                           "subsection Load path\n  set Number of steps = "
+                             "4\n  set End time = 2\nend\n"));
+  const auto &steps = run.problem->steps();
+  REQUIRE(steps.size() == 4);
+  CHECK(steps[1].zone.contact_force == Approx(2.).epsilon(1e-8));
+  CHECK(std::abs(steps[3].zone.contact_force) < 1e-10);
+  CHECK(steps[3].reactions.imbalance < 1e-6);
 }
