@@ -1,6 +1,7 @@
 // The scan of a Gmsh file (gmsh_scan.h, msh_scan.h): its $Nodes and
 // $Elements blocks, each count against what follows and each element's
-// nodes against $Nodes.
+// nodes against $Nodes; the nodes' coordinates and the elements of
+// dimension 2 and 3 are kept for the check of the cells' shapes.
 #include "msh_scan.h"
 
 namespace dualcontact
@@ -90,7 +91,7 @@ namespace dualcontact
                                std::to_string(block_line) + ") announces " +
                                plural(n, "node") + " but holds " +
                                std::to_string(i));
-                  node_tags.push_back(
+                  contents.node_tags.push_back(
                     static_cast<int>(integer(0, 1, largest_int, [&] {
                       return "a node tag of its " + in_block;
                     })));
@@ -105,15 +106,24 @@ namespace dualcontact
                                std::to_string(n + count_lines_of(1)));
                   const auto node = [&] {
                     return "node " +
-                           std::to_string(node_tags[node_tags.size() - n + i]);
+                           std::to_string(
+                             contents
+                               .node_tags[contents.node_tags.size() - n + i]);
                   };
                   if (words.size() != n_coordinates)
                     throw fail("the coordinates of " + node() + " of its " +
                                in_block + " (" + quoted() + ") are " +
                                std::to_string(words.size()) + " numbers, not " +
                                coordinates);
+                  std::array<double, 3> x;
                   for (std::size_t k = 0; k < n_coordinates; ++k)
-                    real(k, [&] { return "a coordinate of " + node(); });
+                    {
+                      const double value =
+                        real(k, [&] { return "a coordinate of " + node(); });
+                      if (k < 3)
+                        x[k] = value;
+                    }
+                  contents.node_coordinates.push_back(x);
                 }
             }
           else
@@ -133,11 +143,17 @@ namespace dualcontact
                 const long long tag = integer(0, 1, largest_int, [&] {
                   return "a node tag of its " + in_block;
                 });
-                node_tags.push_back(static_cast<int>(tag));
+                contents.node_tags.push_back(static_cast<int>(tag));
+                std::array<double, 3> x;
                 for (std::size_t k = 1; k <= n_coordinates; ++k)
-                  real(k, [&] {
-                    return "a coordinate of node " + std::to_string(tag);
-                  });
+                  {
+                    const double value = real(k, [&] {
+                      return "a coordinate of node " + std::to_string(tag);
+                    });
+                    if (k <= 3)
+                      x[k - 1] = value;
+                  }
+                contents.node_coordinates.push_back(x);
               }
           n_read += n;
         }
@@ -170,6 +186,7 @@ namespace dualcontact
     void
     MshScan::node_lookup(const long long min_tag, const long long max_tag)
     {
+      const std::vector<int> &node_tags = contents.node_tags;
       if (node_tags.empty())
         return;
       const auto [smallest, largest] =
@@ -200,7 +217,6 @@ namespace dualcontact
             if (!node_set.insert(tag).second)
               throw twice(tag);
         }
-      node_tags = std::vector<int>();
     }
 
     bool
@@ -224,16 +240,28 @@ namespace dualcontact
     }
 
     void
-    MshScan::element_nodes(const std::size_t first, const long long element)
+    MshScan::element_nodes(const std::size_t first,
+                           const long long   element,
+                           const long long   type)
     {
       const auto name = [element] {
         return "element " + std::to_string(element);
       };
+      // the cells (and in 3D the boundary faces) are kept for the check of
+      // their shapes
+      const bool kept =
+        type == MshContents::triangle || type == MshContents::quad ||
+        type == MshContents::tetrahedron || type == MshContents::hexahedron;
+      MshContents::Element kept_element{static_cast<int>(type),
+                                        static_cast<int>(element),
+                                        {}};
       for (std::size_t k = first; k < words.size(); ++k)
         {
           const long long node = integer(k, 1, largest_int, [&] {
             return "a node of its " + name();
           });
+          if (kept)
+            kept_element.nodes[k - first] = static_cast<int>(node);
           if (!node_exists(node))
             throw fail("its " + name() + " (" + where() + ") refers to node " +
                        std::to_string(node) + ", which $Nodes does not define");
@@ -242,6 +270,8 @@ namespace dualcontact
               throw fail("its " + name() + " (" + where() + ") lists node " +
                          std::to_string(node) + " twice");
         }
+      if (kept)
+        contents.elements.push_back(kept_element);
     }
 
     void
@@ -303,7 +333,7 @@ namespace dualcontact
                                plural(n_nodes, "node") + ", but a " +
                                type->name + " has " +
                                std::to_string(type->nodes));
-                  element_nodes(3 + n_tags, tag);
+                  element_nodes(3 + n_tags, tag, number);
                   ++contents.n_elements[number];
                   smallest = std::min(smallest, tag);
                   largest  = std::max(largest, tag);
@@ -384,7 +414,7 @@ namespace dualcontact
               const long long tag = integer(0, 1, largest_int, [&] {
                 return "an element tag of its " + in_block;
               });
-              element_nodes(1, tag);
+              element_nodes(1, tag, number);
               smallest = std::min(smallest, tag);
               largest  = std::max(largest, tag);
             }

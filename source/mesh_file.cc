@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include <dualcontact/cell_shapes.h>
 #include <dualcontact/discretization.h>
 #include <dualcontact/gmsh_scan.h>
 #include <dualcontact/input_error.h>
@@ -212,6 +213,10 @@ namespace dualcontact
                      contents.count(MshContents::triangle) :
                    contents.count(MshContents::hexahedron) +
                      contents.count(MshContents::tetrahedron)));
+    // deal.II's reader turns over every cell of negative measure on its
+    // own, a folded one as one listed clockwise: the shapes are checked on
+    // the file's cells, with their tags and nodes, the same on every rank
+    check_cell_shapes(contents, dim, file);
 
     text.clear();
     text.seekg(0);

@@ -220,7 +220,7 @@ namespace dualcontact
 
       /** Word i as a finite number, or throw naming it. */
       template <typename What>
-      void
+      double
       real(const std::size_t i, const What &what) const
       {
         double                 value = 0;
@@ -231,6 +231,7 @@ namespace dualcontact
             result.ptr != word.data() + word.size() || !std::isfinite(value))
           throw fail(text(what) + " (" + where() + ") is '" + excerpt(word) +
                      "', not a finite number");
+        return value;
       }
 
       /** How many lines from the current one on have `n_words` words. */
@@ -318,7 +319,9 @@ namespace dualcontact
       void
       elements_section();
       void
-      element_nodes(const std::size_t first, const long long element);
+      element_nodes(const std::size_t first,
+                    const long long   element,
+                    const long long   type);
       bool
       looks_like_element_block() const;
 
@@ -332,9 +335,8 @@ namespace dualcontact
       bool                          partitioned  = false;
       // the tags of $Entities, by dimension
       std::array<std::unordered_set<long long>, 4> entities;
-      // the node tags; then looked up by element in a bitmap if they are
-      // dense (as Gmsh numbers them), else in a hash set
-      std::vector<int>        node_tags;
+      // the node tags (contents.node_tags) looked up by element in a
+      // bitmap if they are dense (as Gmsh numbers them), else in a hash set
       std::vector<bool>       node_bitmap;
       std::unordered_set<int> node_set;
       MshContents             contents;

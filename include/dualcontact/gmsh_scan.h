@@ -5,13 +5,19 @@
 #ifndef dualcontact_gmsh_scan_h
 #define dualcontact_gmsh_scan_h
 
+#include <array>
 #include <istream>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace dualcontact
 {
-  /** What the elements of a Gmsh file are, counted by Gmsh's type number. */
+  /**
+   * What the elements of a Gmsh file are, counted by Gmsh's type number;
+   * its nodes, and its elements of dimension 2 and 3, for the check of the
+   * cells' shapes (cell_shapes.h).
+   */
   struct MshContents
   {
     double                       version = 0.;
@@ -24,14 +30,31 @@ namespace dualcontact
       const auto it = n_elements.find(type);
       return it == n_elements.end() ? 0 : it->second;
     }
+
+    /** The nodes in the order of the file: their tags and (x, y, z). */
+    std::vector<int>                   node_tags;
+    std::vector<std::array<double, 3>> node_coordinates;
+
+    /** An element of the file: its Gmsh type, tag and nodes (their tags). */
+    struct Element
+    {
+      int                type;
+      int                tag;
+      std::array<int, 8> nodes; // the first 3 (triangle), 4 or 8
+    };
+    /**
+     * The triangles, quadrilaterals, tetrahedra and hexahedra in the order
+     * of the file: the cells, and in 3D the boundary faces too.
+     */
+    std::vector<Element> elements;
   };
 
   /**
-   * Scan a Gmsh ASCII file (format 2.x, 4.0 or 4.1): its version and the
-   * count of each element type, after checking that deal.II's reader can
-   * take it. `file` names the file in messages. Throws InputError (exit
-   * status 3, cannot read the file) with one sentence that says what is
-   * wrong and where (the line) otherwise.
+   * Scan a Gmsh ASCII file (format 2.x, 4.0 or 4.1): its version, the
+   * count of each element type, its nodes and its elements of dimension 2
+   * and 3, after checking that deal.II's reader can take it. `file` names the
+   * file in messages. Throws InputError (exit status 3, cannot read the file)
+   * with one sentence that says what is wrong and where (the line) otherwise.
    */
   MshContents
   scan_msh(std::istream &in, const std::string &file);

@@ -30,7 +30,8 @@ namespace dualcontact
    * that do not match what follows them, malformed lines, node tags that
    * repeat or that an element names but $Nodes does not define, an element
    * with the wrong number of nodes or a repeated one, sections out of the
-   * order the reader takes them.
+   * order the reader takes them; and a cell of zero measure, tangled or
+   * folded over its neighbours (check_cell_shapes()).
    *
    * `before_building`, if given, gets the number of cells of the file (its
    * quadrilaterals in 2D, hexahedra in 3D) once the file is checked and

@@ -3,13 +3,17 @@
 // disc's cells and ids; refinement with a manifold converges to the circle
 // (without one, to a polygon); the 3D half cylinder's ids and cylinder; the
 // Hertz pressure error of the read-in half disc against the built-in one;
-// paths relative to the scene file. Every assertion is on a value reduced
-// over all ranks.
+// paths relative to the scene file; damaged files; cells of zero measure,
+// tangled or folded refused with their element and nodes, and cells listed
+// clockwise (left-handed) solved as meant. Every assertion is on a value
+// reduced over all ranks.
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/distributed/tria.h>
 
+#include <dualcontact/cell_shapes.h>
 #include <dualcontact/contact_problem.h>
+#include <dualcontact/gmsh_scan.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameters.h>
 #include <dualcontact/scene.h>
@@ -21,6 +25,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -734,4 +740,483 @@ TEST_CASE("Gmsh files of format 4.0, and 4.1 with parametric coordinates on "
       CHECK(Utilities::MPI::sum(area, MPI_COMM_WORLD) == Approx(1.));
       std::filesystem::remove_all(directory);
     }
+}
+
+namespace
+{
+  using Coordinates = std::array<double, 3>;
+
+  /**
+   * A Gmsh file (format 2.2) of the block [0, 2] x [0, 1] of 4 x 2 squares
+   * (dim = 2; node 1 + i + 5 j at (i, j) / 2), or of the cube [0, 1]^3 of
+   * 2 x 2 x 2 cubes (node 1 + i + 3 j + 9 k at (i, j, k) / 2), with
+   * `simplices` each square cut into two triangles along the diagonal from
+   * its first node, each cube into five tetrahedra (the one of its even
+   * corners, i + j + k even, and one at each odd corner). Boundary ids: 1
+   * at the bottom (y = 0, z = 0), 2 at the top, 3 at x = 0, 4 at x = 2
+   * (2D) or y = 0 (3D), 5 on the other two sides (3D); the cells' id is
+   * 10. The boundary elements come first, then the cells (the squares
+   * row by row, the cubes with k fastest), every cell listed
+   * counterclockwise (right-handed) except the cells c (0, 1, ... among the
+   * cells) where `turned(c)`. `moved` puts some nodes elsewhere. The
+   * meshes of tests/prm/bad/mesh_{folded,zero,tangled}_*.prm are these
+   * with one node moved.
+   */
+  std::string
+  block_msh(const unsigned int                       dim,
+            const bool                               simplices,
+            const std::function<bool(unsigned int)> &turned = {},
+            const std::map<int, Coordinates>        &moved  = {})
+  {
+    std::map<int, Coordinates> nodes;
+    // (Gmsh type, physical id, nodes)
+    std::vector<std::tuple<int, int, std::vector<int>>> elements;
+    std::vector<std::vector<int>>                       cells;
+    if (dim == 2)
+      {
+        const auto n = [](const int i, const int j) { return 1 + i + 5 * j; };
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 5; ++i)
+            nodes[n(i, j)] = {{0.5 * i, 0.5 * j, 0.}};
+        for (int i = 0; i < 4; ++i)
+          elements.push_back({1, 1, {n(i, 0), n(i + 1, 0)}});
+        for (int i = 0; i < 4; ++i)
+          elements.push_back({1, 2, {n(i + 1, 2), n(i, 2)}});
+        for (int j = 0; j < 2; ++j)
+          elements.push_back({1, 3, {n(0, j + 1), n(0, j)}});
+        for (int j = 0; j < 2; ++j)
+          elements.push_back({1, 4, {n(4, j), n(4, j + 1)}});
+        for (int j = 0; j < 2; ++j)
+          for (int i = 0; i < 4; ++i)
+            {
+              const int a = n(i, j), b = n(i + 1, j), c = n(i + 1, j + 1),
+                        d = n(i, j + 1);
+              if (simplices)
+                {
+                  cells.push_back({a, b, c});
+                  cells.push_back({a, c, d});
+                }
+              else
+                cells.push_back({a, b, c, d});
+            }
+      }
+    else
+      {
+        using Index  = std::array<int, 3>;
+        const auto n = [](const Index &x) {
+          return 1 + x[0] + 3 * x[1] + 9 * x[2];
+        };
+        const auto even = [](const Index &x) {
+          return (x[0] + x[1] + x[2]) % 2 == 0;
+        };
+        for (int k = 0; k < 3; ++k)
+          for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i)
+              nodes[n({{i, j, k}})] = {{0.5 * i, 0.5 * j, 0.5 * k}};
+        // the boundary squares; of tetrahedra, each cut along the diagonal
+        // of its even corners
+        for (const auto &[axis, value, id] :
+             std::vector<std::array<int, 3>>{{{2, 0, 1}},
+                                             {{2, 2, 2}},
+                                             {{0, 0, 3}},
+                                             {{1, 0, 4}},
+                                             {{0, 2, 5}},
+                                             {{1, 2, 5}}})
+          {
+            const int a = axis == 0 ? 1 : 0, b = axis == 2 ? 1 : 2;
+            for (int p = 0; p < 2; ++p)
+              for (int q = 0; q < 2; ++q)
+                {
+                  std::vector<Index> corners;
+                  for (const auto &[da, db] : std::vector<std::pair<int, int>>{
+                         {0, 0}, {1, 0}, {1, 1}, {0, 1}})
+                    {
+                      Index x;
+                      x[axis] = value;
+                      x[a]    = p + da;
+                      x[b]    = q + db;
+                      corners.push_back(x);
+                    }
+                  std::vector<int> e, o;
+                  for (const Index &x : corners)
+                    (even(x) ? e : o).push_back(n(x));
+                  if (simplices)
+                    for (const int x : o)
+                      elements.push_back({2, id, {e[0], x, e[1]}});
+                  else
+                    elements.push_back({3,
+                                        id,
+                                        {n(corners[0]),
+                                         n(corners[1]),
+                                         n(corners[2]),
+                                         n(corners[3])}});
+                }
+          }
+        for (int i = 0; i < 2; ++i)
+          for (int j = 0; j < 2; ++j)
+            for (int k = 0; k < 2; ++k)
+              {
+                std::vector<Index> corners;
+                for (int a = 0; a < 2; ++a)
+                  for (int b = 0; b < 2; ++b)
+                    for (int c = 0; c < 2; ++c)
+                      corners.push_back({{i + a, j + b, k + c}});
+                if (!simplices)
+                  {
+                    std::vector<int> hexahedron;
+                    for (const Index &d : std::vector<Index>{{{0, 0, 0}},
+                                                             {{1, 0, 0}},
+                                                             {{1, 1, 0}},
+                                                             {{0, 1, 0}},
+                                                             {{0, 0, 1}},
+                                                             {{1, 0, 1}},
+                                                             {{1, 1, 1}},
+                                                             {{0, 1, 1}}})
+                      hexahedron.push_back(n({{i + d[0], j + d[1], k + d[2]}}));
+                    cells.push_back(hexahedron);
+                    continue;
+                  }
+                std::vector<std::vector<int>> tetrahedra(1);
+                for (const Index &x : corners)
+                  if (even(x))
+                    tetrahedra[0].push_back(n(x));
+                for (const Index &x : corners)
+                  if (!even(x))
+                    {
+                      tetrahedra.push_back({n(x)});
+                      for (const Index &y : corners)
+                        if (std::abs(y[0] - x[0]) + std::abs(y[1] - x[1]) +
+                              std::abs(y[2] - x[2]) ==
+                            1)
+                          tetrahedra.back().push_back(n(y));
+                    }
+                for (std::vector<int> &t : tetrahedra)
+                  {
+                    // right-handed
+                    std::array<Coordinates, 3> e;
+                    for (unsigned int k = 0; k < 3; ++k)
+                      for (unsigned int d = 0; d < 3; ++d)
+                        e[k][d] = nodes[t[k + 1]][d] - nodes[t[0]][d];
+                    if (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                          e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                          e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]) <
+                        0.)
+                      std::swap(t[2], t[3]);
+                    cells.push_back(t);
+                  }
+              }
+      }
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        std::vector<int> &v = cells[c];
+        if (turned && turned(c))
+          {
+            // clockwise, or left-handed
+            if (v.size() == 8)
+              std::rotate(v.begin(), v.begin() + 4, v.end());
+            else
+              std::reverse(v.begin() + 1, v.end());
+          }
+        elements.push_back({v.size() == 3 ? 2 :
+                            v.size() == 8 ? 5 :
+                            dim == 2      ? 3 :
+                                            4,
+                            10,
+                            v});
+      }
+    for (const auto &[tag, x] : moved)
+      nodes[tag] = x;
+
+    std::ostringstream text;
+    text << std::setprecision(10) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+         << "$Nodes\n"
+         << nodes.size() << "\n";
+    for (const auto &[tag, x] : nodes)
+      text << tag << ' ' << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
+    text << "$EndNodes\n$Elements\n" << elements.size() << '\n';
+    unsigned int tag = 0;
+    for (const auto &[type, id, element_nodes] : elements)
+      {
+        text << ++tag << ' ' << type << " 2 " << id << ' ' << id;
+        for (const int node : element_nodes)
+          text << ' ' << node;
+        text << '\n';
+      }
+    text << "$EndElements\n";
+    return text.str();
+  }
+
+  /**
+   * What check_cell_shapes() says of the cells of dimension `dim` of a
+   * Gmsh file's text, from "element" on ("" if nothing).
+   */
+  std::string
+  shape_error(const std::string &text, const unsigned int dim)
+  {
+    std::istringstream in(text);
+    const CaughtError  error = catch_input_error(
+      [&] { check_cell_shapes(scan_msh(in, "'mesh'"), dim, "'mesh'"); });
+    if (!error.thrown)
+      return "";
+    CHECK(error.code == exit_cannot_read_file);
+    const std::string prefix = "The mesh 'mesh' is damaged: ";
+    CHECK(error.message.substr(0, prefix.size()) == prefix);
+    const auto end = error.message.find("; mesh the body again");
+    return error.message.substr(prefix.size(),
+                                end == std::string::npos ? std::string::npos :
+                                                           end - prefix.size());
+  }
+} // namespace
+
+TEST_CASE("A cell of zero measure, a tangled quadrilateral or hexahedron and "
+          "a cell folded over its neighbours are refused naming the element "
+          "and its nodes; cells listed clockwise or left-handed are not",
+          "[mesh][errors]")
+{
+  const std::function<bool(unsigned int)> as_meant,
+    all = [](unsigned int) { return true; };
+  const std::function<bool(unsigned int)> every_other = [](unsigned int c) {
+    return c % 2 == 1;
+  };
+  for (const unsigned int dim : {2u, 3u})
+    for (const bool simplices : {true, false})
+      for (const auto &turned : {as_meant, all, every_other})
+        {
+          INFO(dim << "D, simplices " << simplices);
+          CHECK(shape_error(block_msh(dim, simplices, turned), dim) == "");
+        }
+
+  const std::string folded_18 =
+    "element 18 (nodes 3 9 8) is folded: it overlaps its neighbours (it and "
+    "element 15 lie on the same side of their common edge, nodes 8 3)";
+  const std::string folded_18_turned =
+    "element 18 (nodes 3 8 9) is folded: it overlaps its neighbours (it and "
+    "element 15 lie on the same side of their common edge, nodes 3 8)";
+  const std::string folded_53 =
+    "element 53 (nodes 14 13 5 11) is folded: it overlaps its neighbours (it "
+    "and element 49 lie on the same side of their common face, nodes 13 5 11)";
+  // (dimension, simplices, the cells turned, the nodes moved, the message)
+  const std::vector<std::tuple<unsigned int,
+                               bool,
+                               std::function<bool(unsigned int)>,
+                               std::map<int, Coordinates>,
+                               std::string>>
+    cases = {
+      // a triangle turned over past its edge 3-9, whichever way the
+      // cells are listed
+      {2, true, as_meant, {{8, {{1.35, 0.25, 0.}}}}, folded_18},
+      {2, true, every_other, {{8, {{1.35, 0.25, 0.}}}}, folded_18_turned},
+      {2, true, all, {{8, {{1.35, 0.25, 0.}}}}, folded_18_turned},
+      // a boundary triangle turned inside out past the bottom
+      {2,
+       true,
+       as_meant,
+       {{8, {{0.8, -0.1, 0.}}}},
+       "element 15 (nodes 2 3 8) is folded: it overlaps its neighbours (it "
+       "and element 16 lie on the same side of their common edge, nodes 8 2)"},
+      {2,
+       true,
+       as_meant,
+       {{8, {{1.25, 0.25, 0.}}}},
+       "element 18 (nodes 3 9 8) has zero area: its nodes are on one line"},
+      {2,
+       true,
+       as_meant,
+       {{8, {{1.5, 0.5, 0.}}}},
+       "element 18 (nodes 3 9 8) has zero area: its nodes are on one line"},
+      // a quadrilateral not convex at node 8, or with a straight angle
+      {2,
+       false,
+       as_meant,
+       {{8, {{0.7, 0.2, 0.}}}},
+       "element 14 (nodes 2 3 8 7) is tangled: its Jacobian at node 8 has the "
+       "opposite sign of that at nodes 2 3 7 (it crosses itself or is not "
+       "convex)"},
+      {2,
+       false,
+       every_other,
+       {{8, {{0.7, 0.2, 0.}}}},
+       "element 14 (nodes 2 7 8 3) is tangled: its Jacobian at node 8 has the "
+       "opposite sign of that at nodes 2 7 3 (it crosses itself or is not "
+       "convex)"},
+      {2,
+       false,
+       as_meant,
+       {{8, {{0.75, 0.25, 0.}}}},
+       "element 14 (nodes 2 3 8 7) is degenerate at node 8: its two edges "
+       "there are in line (its Jacobian there is zero)"},
+      // a tetrahedron turned over past its face 13-5-11, or flat on it
+      {3, true, as_meant, {{14, {{0.3, 0.3, 0.3}}}}, folded_53},
+      {3, true, every_other, {{14, {{0.3, 0.3, 0.3}}}}, folded_53},
+      {3,
+       true,
+       as_meant,
+       {{14, {{0.4, 0.3, 0.3}}}},
+       "element 53 (nodes 14 13 5 11) has zero volume: its nodes are on one "
+       "plane"},
+      // a hexahedron turned inside out at node 14, or flat there
+      {3,
+       false,
+       as_meant,
+       {{14, {{0.2, 0.2, 0.2}}}},
+       "element 25 (nodes 1 2 5 4 10 11 14 13) is tangled: its Jacobian at "
+       "node 14 has the opposite sign of that at nodes 1 2 5 4 10 11 13 (it "
+       "is turned inside out at a corner)"},
+      {3,
+       false,
+       all,
+       {{14, {{0.2, 0.2, 0.2}}}},
+       "element 25 (nodes 10 11 14 13 1 2 5 4) is tangled: its Jacobian at "
+       "node 14 has the opposite sign of that at nodes 10 11 13 1 2 5 4 (it "
+       "is turned inside out at a corner)"},
+      {3,
+       false,
+       as_meant,
+       {{14, {{0.4, 0.3, 0.3}}}},
+       "element 25 (nodes 1 2 5 4 10 11 14 13) is degenerate at node 14: its "
+       "three edges there are in one plane (its Jacobian there is zero)"}};
+  for (const auto &[dim, simplices, turned, moved, expected] : cases)
+    {
+      const std::string error =
+        shape_error(block_msh(dim, simplices, turned, moved), dim);
+      INFO(dim << "D, simplices " << simplices << ": " << error);
+      CHECK(error == expected);
+    }
+
+  // a quadrilateral that crosses itself: element 14 listed 2 3 7 8
+  std::string       bow_tie   = block_msh(2, false);
+  const std::string square_14 = "\n14 3 2 10 10 2 3 8 7\n";
+  REQUIRE(bow_tie.find(square_14) != std::string::npos);
+  bow_tie.replace(bow_tie.find(square_14),
+                  square_14.size(),
+                  "\n14 3 2 10 10 2 3 7 8\n");
+  CHECK(shape_error(bow_tie, 2) ==
+        "element 14 (nodes 2 3 7 8) is tangled: its Jacobian at nodes 7 8 has "
+        "the opposite sign of that at nodes 2 3 (it crosses itself or is not "
+        "convex)");
+
+  // three cells in a row, the third folded back over the middle one: its
+  // own shape is sound (listed the other way round), but it lies on the
+  // same side of the face it shares with the middle one; a quadrilateral
+  // and a hexahedron
+  const std::string folded_quad =
+    "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n"
+    "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0.5 0.2 0\n6 0.5 0.8 0\n"
+    "7 -1 0 0\n8 -1 1 0\n$EndNodes\n$Elements\n3\n"
+    "1 3 2 10 10 7 1 4 8\n2 3 2 10 10 1 2 3 4\n3 3 2 10 10 2 5 6 3\n"
+    "$EndElements\n";
+  CHECK(shape_error(folded_quad, 2) ==
+        "element 3 (nodes 2 5 6 3) is folded: it overlaps its neighbours (it "
+        "and element 2 lie on the same side of their common edge, nodes 3 2)");
+  const std::string folded_hexahedron =
+    "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n16\n"
+    "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 0 1\n6 1 0 1\n7 1 1 1\n"
+    "8 0 1 1\n9 0.5 0.2 0.2\n10 0.5 0.8 0.2\n11 0.5 0.8 0.8\n"
+    "12 0.5 0.2 0.8\n13 -1 0 0\n14 -1 1 0\n15 -1 1 1\n16 -1 0 1\n"
+    "$EndNodes\n$Elements\n3\n"
+    "1 5 2 10 10 13 1 4 14 16 5 8 15\n"
+    "2 5 2 10 10 1 2 3 4 5 6 7 8\n"
+    "3 5 2 10 10 2 9 10 3 6 12 11 7\n$EndElements\n";
+  CHECK(shape_error(folded_hexahedron, 3) ==
+        "element 3 (nodes 2 9 10 3 6 12 11 7) is folded: it overlaps its "
+        "neighbours (it and element 2 lie on the same side of their common "
+        "face, nodes 2 6 7 3)");
+  // three triangles on one edge
+  const std::string three_on_an_edge =
+    "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n"
+    "1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 2 0\n$EndNodes\n"
+    "$Elements\n3\n1 2 2 10 10 1 2 3\n2 2 2 10 10 2 1 4\n"
+    "3 2 2 10 10 1 2 5\n$EndElements\n";
+  CHECK(shape_error(three_on_an_edge, 2) ==
+        "element 1 (nodes 1 2 3) is folded: it overlaps its neighbours (its "
+        "edge, nodes 1 2, is an edge of 3 elements)");
+
+  // through the reader, in format 4.1: the half disc's middle node 1 moved
+  // from (0, 0) to (0, -0.7), past node 6 at (0, -0.56), which makes a bow
+  // tie of the quadrilateral 9
+  const CaughtError moved =
+    error_of_mesh(damaged("half_disc.msh", "0 0 0", "0 -0.7 0"));
+  INFO(moved.message);
+  CHECK(moved.code == exit_cannot_read_file);
+  CHECK(moved.message.find(
+          "/mesh.msh' is damaged: element 9 (nodes 6 4 3 1) is tangled: its "
+          "Jacobian at nodes 4 3 has the opposite sign of that at nodes 6 1 "
+          "(it crosses itself or is not convex); mesh the body again or move "
+          "the element's nodes (doc/meshes.md).") != std::string::npos);
+}
+
+TEST_CASE("Cells listed clockwise (left-handed), all or some, are read as "
+          "meant: the block pressed by 10 onto the plane has the pressure 10 "
+          "at every contact node",
+          "[mesh][simplex]")
+{
+  const std::string directory =
+    temporary_directory("clockwise_msh", MPI_COMM_WORLD);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::filesystem::create_directories(directory);
+  const std::function<bool(unsigned int)> all = [](unsigned int) {
+    return true;
+  };
+  const std::function<bool(unsigned int)> every_other = [](unsigned int c) {
+    return c % 2 == 1;
+  };
+  // (dimension, simplices, the cells turned)
+  const std::vector<
+    std::tuple<unsigned int, bool, std::function<bool(unsigned int)>>>
+               cases = {{2, true, all},
+                        {2, true, every_other},
+                        {2, false, every_other},
+                        {3, true, every_other},
+                        {3, false, all},
+                        {3, false, every_other}};
+  unsigned int n     = 0;
+  for (const auto &[dim, simplices, turned] : cases)
+    {
+      const std::string file =
+        directory + "/block_" + std::to_string(n++) + ".msh";
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::ofstream(file) << block_msh(dim, simplices, turned);
+      MPI_Barrier(MPI_COMM_WORLD);
+      // E = 1000, nu = 0.3, pressed by 10 on its top, held sideways by
+      // sliders: the uniform pressure 10 on the plane, which P1 and Q1
+      // give exactly
+      const std::string scene =
+        "subsection Geometry\n  set Dimension = " + std::to_string(dim) +
+        "\n  set Type = mesh file\n  set Mesh file = " + file +
+        "\nend\n"
+        "subsection Material\n  set Young's modulus = 1000\n"
+        "  set Poisson's ratio = 0.3\nend\n"
+        "subsection Boundary conditions\n" +
+        (dim == 2 ? "  set Conditions = 1: contact, 2: traction, 3: normal "
+                    "fixed, 4: free\n  set Tractions = 2: 0; -10\n" :
+                    "  set Conditions = 1: contact, 2: traction, 3: normal "
+                    "fixed, 4: normal fixed, 5: free\n"
+                    "  set Tractions = 2: 0; 0; -10\n") +
+        "end\n"
+        "subsection Foundation\n" +
+        (dim == 2 ? "  set Point = 0, 0\n  set Normal = 0, 1\n" :
+                    "  set Point = 0, 0, 0\n  set Normal = 0, 0, 1\n") +
+        "end\n"
+        "subsection Refinement\n  set Initial global refinement = 1\n"
+        "  set Number of cycles = 1\nend\n"
+        "subsection Solver\n  set Uzawa tolerance = 1e-11\nend\n";
+      INFO(dim << "D, simplices " << simplices);
+      if (dim == 2)
+        {
+          const SceneRun<2> run("", scene);
+          // 8 edges of the plane: 9 nodes
+          CHECK(run.last().solve.n_contact_nodes == 9);
+          CHECK(run.last().zone.contact_force == Approx(20.).epsilon(1e-10));
+          CHECK(deviation(run, 10., Tensor<1, 2>()).first <= 1e-7);
+        }
+      else
+        {
+          const SceneRun<3> run("", scene);
+          // 4 x 4 squares of the plane: 25 nodes
+          CHECK(run.last().solve.n_contact_nodes == 25);
+          CHECK(run.last().zone.contact_force == Approx(10.).epsilon(1e-10));
+          CHECK(deviation(run, 10., Tensor<1, 3>()).first <= 1e-7);
+        }
+    }
+  remove_directory(directory, MPI_COMM_WORLD);
 }
