@@ -5,6 +5,11 @@
 
 #include <dualcontact/checkpoint.h>
 
+#include <boost/crc.hpp>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -16,13 +21,68 @@ namespace dualcontact
   std::string
   checkpoint_folder(const std::string &directory)
   {
-    return directory + "/checkpoint";
+    // (output/ gives output/checkpoint, not output//checkpoint: the path
+    // is named in messages)
+    return (std::filesystem::path(directory) / "checkpoint").string();
+  }
+
+  InputError
+  damaged_checkpoint(const std::string &file, const std::string &what)
+  {
+    // (what may end with deal.II's period)
+    const bool period = !what.empty() && what.back() == '.';
+    return InputError("The checkpoint file " + file + " is damaged: " + what +
+                        (period ? " " : ". ") +
+                        "Resume from a whole copy of the folder "
+                        "checkpoint/, or run the scene afresh without "
+                        "--resume.",
+                      exit_cannot_read_file);
+  }
+
+  std::string
+  file_checksum(const std::string &file)
+  {
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+      return {};
+    boost::crc_32_type crc;
+    std::vector<char>  buffer(1 << 20);
+    while (in)
+      {
+        in.read(buffer.data(), buffer.size());
+        crc.process_bytes(buffer.data(), in.gcount());
+      }
+    if (in.bad())
+      return {};
+    std::ostringstream text;
+    text << std::hex << std::setw(8) << std::setfill('0') << crc.checksum();
+    return text.str();
+  }
+
+  bool
+  read_number(const std::string &word, double &x)
+  {
+    if (word.empty() || std::isspace(static_cast<unsigned char>(word[0])))
+      return false;
+    char *end = nullptr;
+    x         = std::strtod(word.c_str(), &end);
+    return end == word.c_str() + word.size() && std::isfinite(x);
+  }
+
+  bool
+  read_whole_number(const std::string &word, unsigned long long &n)
+  {
+    if (word.empty() || word.size() > 19 ||
+        word.find_first_not_of("0123456789") != std::string::npos)
+      return false;
+    n = std::stoull(word);
+    return true;
   }
 
   void
   CheckpointRecord::set(const std::string &key, const std::string &value)
   {
-    Assert(key.find_first_of(" \n") == std::string::npos &&
+    Assert(!key.empty() && key.find_first_of(" \n") == std::string::npos &&
              value.find('\n') == std::string::npos,
            dealii::ExcMessage("A checkpoint's key is one word, its value one "
                               "line."));
@@ -41,17 +101,73 @@ namespace dualcontact
   CheckpointRecord::text(const std::string &key) const
   {
     const auto found = values.find(key);
-    AssertThrow(found != values.end(),
-                dealii::ExcMessage("The checkpoint's state.txt has no '" + key +
-                                   "': it was not written by this version "
-                                   "of dualcontact, or not completely."));
+    if (found == values.end())
+      throw damaged_checkpoint(name_of_file,
+                               "it has no '" + key +
+                                 "' (it was cut short, or written by "
+                                 "another version of dualcontact)");
+    taken.insert(key);
     return found->second;
   }
 
   double
-  CheckpointRecord::number(const std::string &key) const
+  CheckpointRecord::number(const std::string &key, const double lowest) const
   {
-    return std::stod(text(key));
+    double x = 0.;
+    if (!read_number(text(key), x))
+      throw damaged(key, "not a finite number");
+    if (x < lowest)
+      {
+        std::ostringstream bound;
+        bound << lowest;
+        throw damaged(key, "less than " + bound.str());
+      }
+    return x;
+  }
+
+  unsigned long long
+  CheckpointRecord::whole_number(const std::string       &key,
+                                 const unsigned long long lowest,
+                                 const unsigned long long highest) const
+  {
+    unsigned long long n = 0;
+    if (!read_whole_number(text(key), n))
+      throw damaged(key, "not a whole number");
+    if (n < lowest)
+      throw damaged(key, "less than " + std::to_string(lowest));
+    if (n > highest)
+      throw damaged(key, "more than " + std::to_string(highest));
+    return n;
+  }
+
+  std::vector<unsigned long long>
+  CheckpointRecord::whole_numbers(const std::string &key,
+                                  const std::size_t  n) const
+  {
+    const std::vector<std::string>  split = words(key);
+    std::vector<unsigned long long> numbers(split.size());
+    for (std::size_t i = 0; i < split.size(); ++i)
+      if (!read_whole_number(split[i], numbers[i]))
+        throw damaged(key, "not " + std::to_string(n) + " whole numbers");
+    if (numbers.size() != n)
+      throw damaged(key, "not " + std::to_string(n) + " whole numbers");
+    return numbers;
+  }
+
+  std::vector<std::string>
+  CheckpointRecord::words(const std::string &key) const
+  {
+    // every space separates: two in a row, or one at an end, give an
+    // empty word, which no reader takes
+    const std::string       &value = text(key);
+    std::vector<std::string> split;
+    std::size_t              begin = 0;
+    for (std::size_t space;
+         (space = value.find(' ', begin)) != std::string::npos;
+         begin = space + 1)
+      split.push_back(value.substr(begin, space - begin));
+    split.push_back(value.substr(begin));
+    return split;
   }
 
   std::map<std::string, std::string>
@@ -62,8 +178,35 @@ namespace dualcontact
          entry != values.end() &&
          entry->first.compare(0, prefix.size(), prefix) == 0;
          ++entry)
-      found.insert(*entry);
+      {
+        found.insert(*entry);
+        taken.insert(entry->first);
+      }
     return found;
+  }
+
+  InputError
+  CheckpointRecord::damaged(const std::string &key,
+                            const std::string &what) const
+  {
+    const auto  found = values.find(key);
+    std::string value = found == values.end() ? "" : found->second;
+    // (a long value is named by its beginning)
+    if (value.size() > 60)
+      value = value.substr(0, 60) + "...";
+    return damaged_checkpoint(name_of_file,
+                              "'" + key + "' is '" + printable(value) + "', " +
+                                what);
+  }
+
+  void
+  CheckpointRecord::check_all_taken() const
+  {
+    for (const auto &[key, value] : values)
+      if (taken.count(key) == 0)
+        throw damaged_checkpoint(name_of_file,
+                                 "'" + printable(key) +
+                                   "' is not a field of a checkpoint");
   }
 
   void
@@ -81,13 +224,34 @@ namespace dualcontact
     std::ifstream in(filename);
     if (!in)
       return false;
+    name_of_file = filename;
     values.clear();
-    std::string line;
-    while (std::getline(in, line))
+    taken.clear();
+    std::ostringstream whole;
+    whole << in.rdbuf();
+    const std::string text = whole.str();
+    // write() ends every line: a file that ends within one was cut short
+    if (!text.empty() && text.back() != '\n')
+      throw damaged_checkpoint(filename,
+                               "its last line has no end (the file was cut "
+                               "short)");
+    std::istringstream lines(text);
+    std::string        line;
+    for (unsigned int number = 1; std::getline(lines, line); ++number)
       {
         const std::size_t space = line.find(' ');
-        if (space != std::string::npos)
-          values[line.substr(0, space)] = line.substr(space + 1);
+        if (space == 0 || space == std::string::npos)
+          throw damaged_checkpoint(filename,
+                                   "line " + std::to_string(number) + " ('" +
+                                     printable(line.substr(0, 60)) +
+                                     "') is not 'key value'");
+        if (!values.emplace(line.substr(0, space), line.substr(space + 1))
+               .second)
+          throw damaged_checkpoint(filename,
+                                   "line " + std::to_string(number) +
+                                     " gives '" +
+                                     printable(line.substr(0, space)) +
+                                     "' a second time");
       }
     return true;
   }

@@ -14,6 +14,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace dualcontact
@@ -92,6 +95,7 @@ namespace dualcontact
       transfer.prepare_for_serialization(pointers);
       forest_of(triangulation).save(building + "/mesh");
     }
+    MPI_Barrier(mpi_communicator); // (every rank's part written)
 
     // the scalars of the path and of the report
     CheckpointRecord record;
@@ -127,6 +131,21 @@ namespace dualcontact
       }
     if (root)
       {
+        // the forest's files with their sizes and CRC-32, which a resumed
+        // run checks before deal.II and p4est read them: p4est stops the
+        // whole program on a file it cannot read, and deal.II takes what
+        // it reads for the sizes of the fields, where a file cut short, or
+        // of zeros after a crash, is a damaged checkpoint
+        std::map<std::string, std::uintmax_t> sizes;
+        for (const auto &entry : fs::directory_iterator(building))
+          if (entry.path().filename().string().compare(0, 4, "mesh") == 0)
+            sizes[entry.path().filename().string()] = entry.file_size();
+        std::string files;
+        for (const auto &[name, size] : sizes)
+          files += (files.empty() ? "" : " ") + name + " " +
+                   std::to_string(size) + " " +
+                   file_checksum(building + "/" + name);
+        record.set("files", files);
         record.write(building + "/state.txt");
         std::ofstream(building + "/parameters.prm")
           << parameters.parameter_file;
@@ -152,20 +171,45 @@ namespace dualcontact
     // the coarse mesh, refined as the checkpoint's forest, and set up at
     // the time the run set it up (the first step's, or the step's own on a
     // mesh adapted for it), then at the checkpoint's
-    const double time = record.number("time");
+    const double                          time = record.number("time");
+    const std::vector<unsigned long long> mesh =
+      record.whole_numbers("mesh", 3);
+    if (mesh[0] > parameters.refinement.n_cycles)
+      throw damaged_checkpoint(
+        folder + "/state.txt",
+        "its 'mesh' is of cycle " + std::to_string(mesh[0]) +
+          ", beyond the scene's <Refinement/Number of cycles> = " +
+          std::to_string(parameters.refinement.n_cycles));
     scene.set_time(
       parameters.load_path.adapt_at_every_step ? time : step_times.front());
     triangulation.clear();
     scene.create_coarse_mesh(triangulation);
-    forest_of(triangulation).load(folder + "/mesh");
-    std::istringstream mesh(record.text("mesh"));
-    mesh >> path_mesh.cycle;
+    // (deal.II's checks of the files it reads, which load_checkpoint()
+    // has compared with their sizes and checksums; a checkpoint being
+    // written is read back unchecked)
+    auto &forest = forest_of(triangulation);
+    try
+      {
+        forest.load(folder + "/mesh");
+      }
+    catch (const std::exception &exception)
+      {
+        throw damaged_checkpoint(folder + "/mesh",
+                                 "deal.II cannot read the mesh from it: " +
+                                   exception_message(exception));
+      }
+    path_mesh.cycle = mesh[0];
     setup_system(path_mesh.cycle);
-    mesh >> path_mesh.n_cells >> path_mesh.n_dofs;
-    AssertThrow(path_mesh.n_dofs == dof_handler.n_dofs() &&
-                  path_mesh.n_cells == triangulation.n_global_active_cells(),
-                ExcMessage("The checkpoint's mesh does not have the cells "
-                           "and DoFs that its state.txt says."));
+    path_mesh.n_cells = mesh[1];
+    path_mesh.n_dofs  = mesh[2];
+    if (path_mesh.n_dofs != dof_handler.n_dofs() ||
+        path_mesh.n_cells != triangulation.n_global_active_cells())
+      throw damaged_checkpoint(
+        folder + "/state.txt",
+        "its 'mesh' gives " + std::to_string(mesh[1]) + " cells and " +
+          std::to_string(mesh[2]) + " DoFs, and the mesh in " + folder +
+          "/mesh has " + std::to_string(triangulation.n_global_active_cells()) +
+          " cells and " + std::to_string(dof_handler.n_dofs()) + " DoFs");
     scene.set_time(time);
     move_to_step_time();
 
@@ -179,10 +223,19 @@ namespace dualcontact
     for (Vector &field : fields)
       pointers.push_back(&field);
     parallel::distributed::SolutionTransfer<dim, Vector> transfer(dof_handler);
-    transfer.deserialize(pointers);
+    try
+      {
+        transfer.deserialize(pointers);
+      }
+    catch (const std::exception &exception)
+      {
+        throw damaged_checkpoint(folder + "/mesh_fixed.data",
+                                 "deal.II cannot read the fields from it: " +
+                                   exception_message(exception));
+      }
     solution = fields[0];
     step_start_u.clear();
-    if (record.text("has_start_u") == "1")
+    if (record.whole_number("has_start_u", 0, 1) == 1)
       {
         step_start_u.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
@@ -203,9 +256,10 @@ namespace dualcontact
   ContactProblem<dim>::load_checkpoint(StepControl &control)
   {
     TimerOutput::Scope t(computing_timer, "load checkpoint");
-    const std::string  directory = parameters.output.directory;
-    const std::string  folder    = checkpoint_folder(directory);
-    CheckpointRecord   record;
+    namespace fs                = std::filesystem;
+    const std::string directory = parameters.output.directory;
+    const std::string folder    = checkpoint_folder(directory);
+    CheckpointRecord  record;
     if (!record.read(folder + "/state.txt"))
       throw InputError("There is no checkpoint to resume from in '" +
                          directory +
@@ -213,8 +267,117 @@ namespace dualcontact
                          "writes one after every <Output/Checkpoint "
                          "interval>-th step of its load path.",
                        exit_cannot_read_file);
+
+    // A damaged checkpoint (a disk that filled up, a copy cut short, an
+    // edited state.txt) is bad input, exit 3, naming the file and what is
+    // wrong: not an error inside deal.II or p4est, nor a run that goes on
+    // from numbers that do not hold together. First every field of
+    // state.txt and the forest's files (their sizes and checksums), then
+    // whether it is this scene's checkpoint on as many ranks (exit 6),
+    // then whether the fields fit the scene's load path and the mesh
+    // read. Every rank reads the same state.txt and throws alike.
+    const unsigned int n_max = std::numeric_limits<unsigned int>::max();
+    const auto         step =
+      static_cast<unsigned int>(record.whole_number("step", 1, n_max));
+    const double time = record.number("time");
+    const auto   ranks =
+      static_cast<unsigned int>(record.whole_number("ranks", 1, n_max));
+    const std::string &control_state = record.text("step_control");
+    record.whole_number("has_start_u", 0, 1);
+    record.whole_numbers("mesh", 3);
+    const double saved_last_step_start = record.number("last_step_start");
+    const double saved_dissipated      = record.number("dissipated");
+    SolutionSize saved_size;
+    saved_size.l1_norm             = record.number("size_l1_norm", 0.);
+    saved_size.l1_max              = record.number("size_l1_max", 0.);
+    saved_size.v_norm              = record.number("size_v_norm", 0.);
+    saved_size.v_max               = record.number("size_v_max", 0.);
+    saved_size.force_norm          = record.number("size_force_norm", 0.);
+    saved_size.contact_force       = record.number("size_contact_force");
+    const double       total_time  = record.number("total_time", 0.);
+    const std::string &loop_figure = record.text("loop_figure");
+    // the pvd files' records: a count, then as many times and files
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+      saved_pvd;
+    for (const auto &[key, value] : record.with_prefix("pvd_"))
+      {
+        const std::vector<std::string> words = record.words(key);
+        unsigned long long             n     = 0;
+        if (!read_whole_number(words[0], n) || words.size() != 1 + 2 * n)
+          throw record.damaged(key, "not a count and as many times and files");
+        auto &records = saved_pvd[key.substr(4)];
+        for (std::size_t i = 1; i < words.size(); i += 2)
+          {
+            double pvd_time = 0.;
+            if (!read_number(words[i], pvd_time) || words[i + 1].empty())
+              throw record.damaged(key,
+                                   "not a count and as many times and files");
+            records.emplace_back(pvd_time, words[i + 1]);
+          }
+      }
+    // the forest's files, each as it was written: its size and CRC-32
+    // (p4est stops the program on a file it cannot read, deal.II trusts
+    // the sizes it reads from the fields' file). Rank 0 reads them and
+    // tells the others what it found, so that all throw together.
+    const std::vector<std::string> files = record.words("files");
+    std::set<std::string>          names;
+    for (std::size_t i = 0; i + 2 < files.size(); i += 3)
+      {
+        unsigned long long size = 0;
+        if (files[i].compare(0, 4, "mesh") != 0 ||
+            files[i].find('/') != std::string::npos ||
+            !read_whole_number(files[i + 1], size) ||
+            files[i + 2].size() != 8 ||
+            files[i + 2].find_first_not_of("0123456789abcdef") !=
+              std::string::npos)
+          break;
+        names.insert(files[i]);
+      }
+    if (files.size() % 3 != 0 || names.size() != files.size() / 3 ||
+        names.count("mesh") == 0 || names.count("mesh.info") == 0)
+      throw record.damaged("files",
+                           "not the forest's files mesh, mesh.info, ... each "
+                           "with its size and CRC-32");
+    std::string file_damage;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      for (std::size_t i = 0; i < files.size() && file_damage.empty(); i += 3)
+        {
+          const std::string file = folder + "/" + files[i];
+          std::error_code   error;
+          const auto        size = fs::file_size(file, error);
+          std::string       checksum;
+          if (error || (checksum = file_checksum(file)).empty())
+            file_damage = damaged_checkpoint(file,
+                                             "it is missing or cannot be "
+                                             "read")
+                            .what();
+          else if (std::to_string(size) != files[i + 1])
+            file_damage =
+              damaged_checkpoint(file,
+                                 "it has " + std::to_string(size) +
+                                   " bytes, and state.txt gives " +
+                                   files[i + 1] + " (it was cut short)")
+                .what();
+          else if (checksum != files[i + 2])
+            file_damage =
+              damaged_checkpoint(file,
+                                 "its CRC-32 is " + checksum +
+                                   ", and state.txt gives " + files[i + 2] +
+                                   " (its bytes changed)")
+                .what();
+        }
+    file_damage = Utilities::MPI::broadcast(mpi_communicator, file_damage, 0);
+    if (!file_damage.empty())
+      throw InputError(file_damage, exit_cannot_read_file);
+    record.check_all_taken();
+    std::ifstream      saved_file(folder + "/parameters.prm");
     std::ostringstream saved;
-    saved << std::ifstream(folder + "/parameters.prm").rdbuf();
+    saved << saved_file.rdbuf();
+    if (!saved_file || saved.str().empty())
+      throw damaged_checkpoint(folder + "/parameters.prm",
+                               "it is missing, empty or cannot be read");
+
+    // this scene's checkpoint, on as many ranks
     const std::string difference = first_difference(parameters.parameter_file,
                                                     saved.str(),
                                                     entries_free_on_resume);
@@ -223,7 +386,6 @@ namespace dualcontact
                          "' is of another scene: " + difference +
                          ". Resume with the parameters it was written with.",
                        exit_inconsistent);
-    const unsigned int ranks = std::stoul(record.text("ranks"));
     if (ranks != Utilities::MPI::n_mpi_processes(mpi_communicator))
       throw InputError(
         "The checkpoint in '" + directory + "' was written on " +
@@ -234,42 +396,27 @@ namespace dualcontact
           "), which gives the same numbers as a run that was not stopped.",
         exit_inconsistent);
 
+    // the fields against the scene's load path, and the mesh and fields
+    // (their cells and DoFs against 'mesh')
+    if (!control.load(control_state, step, time))
+      throw record.damaged("step_control",
+                           "which does not hold together with 'step' " +
+                             std::to_string(step) + " and 'time' " +
+                             record.text("time") + " on the scene's load path");
+    if (!report.load_loop_figure_state(loop_figure))
+      throw record.damaged("loop_figure", "not a state of steps.gp's ranges");
     load_mesh_and_fields(folder, record);
     probes.check_inside(mapping, triangulation);
 
     // the path's state, and the report's
-    const unsigned int step = std::stoul(record.text("step"));
-    control.load(record.text("step_control"));
-    last_step_start             = record.number("last_step_start");
-    dissipated                  = record.number("dissipated");
-    previous_size.l1_norm       = record.number("size_l1_norm");
-    previous_size.l1_max        = record.number("size_l1_max");
-    previous_size.v_norm        = record.number("size_v_norm");
-    previous_size.v_max         = record.number("size_v_max");
-    previous_size.force_norm    = record.number("size_force_norm");
-    previous_size.contact_force = record.number("size_contact_force");
-    pvd_records.clear();
-    for (const auto &[key, value] : record.with_prefix("pvd_"))
-      {
-        std::istringstream in(value);
-        std::size_t        n = 0;
-        in >> n;
-        auto &records = pvd_records[key.substr(4)];
-        for (std::size_t i = 0; i < n; ++i)
-          {
-            double      pvd_time = 0.;
-            std::string file;
-            in >> pvd_time >> file;
-            records.emplace_back(pvd_time, file);
-          }
-      }
+    last_step_start = saved_last_step_start;
+    dissipated      = saved_dissipated;
+    previous_size   = saved_size;
+    pvd_records     = saved_pvd;
     if (!probes.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       probes.resume_step_csv(directory + "/probes_steps.csv", step);
-    report.resume(step,
-                  record.number("time"),
-                  record.number("total_time"),
-                  record.text("loop_figure"));
+    report.resume(step, time, total_time);
     return step;
   }
 

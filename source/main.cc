@@ -104,10 +104,11 @@ namespace
       << options()
       << "\n"
          "Exit status: 0 success, 1 solver failure, 2 wrong command line,\n"
-         "3 parameter (or mesh) file unreadable, 4 unknown entry, malformed\n"
-         "line or entry set twice, 5 invalid value (or an output folder that cannot be\n"
-         "made), 6 inconsistent scene (or a mesh too large for the machine's\n"
-         "memory), 7 load the foundation cannot hold.\n";
+         "3 parameter (or mesh) file unreadable, or a damaged checkpoint,\n"
+         "4 unknown entry, malformed line or entry set twice, 5 invalid value\n"
+         "(or an output folder that cannot be made), 6 inconsistent scene (or\n"
+         "a mesh too large for the machine's memory), 7 load the foundation\n"
+         "cannot hold.\n";
     return text.str();
   }
 
@@ -144,7 +145,17 @@ namespace
     if (values.count("set"))
       line.overrides = values["set"].as<std::vector<std::string>>();
     if (values.count("resume"))
-      line.resume = values["resume"].as<std::string>();
+      {
+        // an empty name (--resume "$DIR" with DIR unset) would read as no
+        // --resume at all: the run would start afresh and remove the
+        // checkpoint it was meant to go on from
+        line.resume = values["resume"].as<std::string>();
+        if (line.resume.empty())
+          throw dualcontact::InputError(
+            "--resume needs the output folder of the checkpoint, and was "
+            "given an empty name; nothing was run or removed.",
+            dualcontact::exit_usage);
+      }
     const bool needs_scene = !line.help && !line.print_parameters;
     if ((needs_scene && line.scenes.size() != 1) || line.scenes.size() > 1 ||
         (line.scenes.empty() && !line.overrides.empty()))

@@ -228,26 +228,9 @@ namespace dualcontact
       }
     catch (const std::exception &exception)
       {
-        std::string what = exception.what();
-        // deal.II's message: the text after "Additional information:"
-        const auto info = what.find("Additional information:");
-        if (info != std::string::npos)
-          what = what.substr(info + 23);
-        const auto trace = what.find("Stacktrace:");
-        if (trace != std::string::npos)
-          what = what.substr(0, trace);
-        std::string        line;
-        std::istringstream lines(what);
-        std::string        message;
-        while (std::getline(lines, line))
-          if (!line.empty() &&
-              line.find_first_not_of(" \t-") != std::string::npos)
-            message += (message.empty() ? "" : " ") +
-                       line.substr(line.find_first_not_of(" \t"));
-        if (message.size() > 300)
-          message = message.substr(0, 300) + "...";
         throw InputError("The mesh file " + file +
-                           " cannot be read by deal.II's GridIn: " + message,
+                           " cannot be read by deal.II's GridIn: " +
+                           exception_message(exception),
                          exit_cannot_read_file);
       }
 

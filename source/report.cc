@@ -787,8 +787,7 @@ namespace dualcontact
   void
   Report<dim>::resume(const unsigned int last_step,
                       const double       time,
-                      const double       total_time,
-                      const std::string &loop_figure_state)
+                      const double       total_time)
   {
     steps_before  = last_step;
     cycles_before = parameters.refinement.n_cycles;
@@ -798,10 +797,7 @@ namespace dualcontact
         const std::string &directory = parameters.output.directory;
         steps_file.resume(directory + "/steps.csv", last_step);
         if (scene.effects().contact)
-          {
-            iterations_file.resume(directory + "/iterations.csv", last_step);
-            loop_figure->load(loop_figure_state);
-          }
+          iterations_file.resume(directory + "/iterations.csv", last_step);
       }
     iterations_file_started = true;
     // the first step's times from here: not the time the loading took
@@ -831,6 +827,13 @@ namespace dualcontact
   Report<dim>::loop_figure_state() const
   {
     return loop_figure->state();
+  }
+
+  template <int dim>
+  bool
+  Report<dim>::load_loop_figure_state(const std::string &state)
+  {
+    return loop_figure->load(state);
   }
 
   template <int dim>

@@ -1,6 +1,4 @@
 // The times of a load path's later steps (step_control.h).
-#include <deal.II/base/exceptions.h>
-
 #include <dualcontact/step_control.h>
 
 #include <algorithm>
@@ -111,14 +109,41 @@ namespace dualcontact
     return out.str();
   }
 
-  void
-  StepControl::load(const std::string &state)
+  bool
+  StepControl::load(const std::string &state,
+                    const unsigned int step,
+                    const double       step_time)
   {
     std::istringstream in(state);
-    in >> next >> time >> level >> converged;
-    AssertThrow(in && next >= 1 && next <= times.size(),
-                dealii::ExcMessage("The step control's state '" + state +
-                                   "' is not one that state() writes."));
-    n_cuts = 0;
+    std::size_t        next_read      = 0;
+    double             time_read      = 0.;
+    unsigned int       level_read     = 0;
+    unsigned int       converged_read = 0;
+    in >> next_read >> time_read >> level_read >> converged_read;
+    if (!in || !(in >> std::ws).eof())
+      return false;
+    // a state that accept() leaves: a time from the listed time it left
+    // (included) to the one it heads for, the step's own; at least as many
+    // steps as listed times passed (as many without sub-steps); a count of
+    // converged steps below 2; and a level that a cut can reach (one
+    // beyond it would take steps that do not move the path on)
+    if (next_read < 1 || next_read >= times.size() ||
+        !(times[next_read - 1] <= time_read && time_read < times[next_read]) ||
+        time_read != step_time || step < next_read ||
+        (!adaptive && step != next_read) || converged_read > 1)
+      return false;
+    double longest = 0.;
+    for (std::size_t i = 1; i < times.size(); ++i)
+      longest = std::max(longest, times[i] - times[i - 1]);
+    if ((!adaptive && level_read > 0) ||
+        std::ldexp(longest, -static_cast<int>(std::min(level_read, 2000u))) <
+          min_step / 2.)
+      return false;
+    next      = next_read;
+    time      = time_read;
+    level     = level_read;
+    converged = converged_read;
+    n_cuts    = 0;
+    return true;
   }
 } // namespace dualcontact

@@ -7,7 +7,11 @@
 # if the resumed run says where it began, and steps.csv, iterations.csv,
 # probes_steps.csv, the last contact table and contact_step.pvd come out as
 # the first run wrote them (numdiff, 1e-12 relative; the columns of wall
-# times and memory left out), and if resuming on 1 rank is refused (exit 6).
+# times and memory left out), if resuming on 1 rank is refused (exit 6), if
+# '--resume ""' is refused (exit 2) and leaves the folder as it was, and if
+# a damaged checkpoint (a field of state.txt that does not parse, is not
+# finite or out of its range, cells that are not the mesh's, the forest's
+# files emptied) is refused as a damaged file (exit 3) naming the file.
 #   bash check_resume.sh <dualcontact> <mpirun> <scene> <work dir>
 set -euo pipefail
 program="$1"
@@ -65,4 +69,47 @@ status=0
 [ "$status" -eq 6 ] || fail "resuming on 1 rank gave exit $status, not 6"
 grep -q "was written on 2 MPI ranks, and this run has 1: resume it on 2" one_rank.log ||
   fail "resuming on 1 rank does not say why it is refused"
-echo "check_resume: the resumed run repeats the first run's numbers"
+
+# an empty folder name (--resume "$DIR" with DIR unset): refused before
+# anything is run, the checkpoint and the files kept
+listing() { (cd out && find . -type f | sort | xargs md5sum); }
+listing > before.txt
+status=0
+"$program" "$scene" "${settings[@]}" --resume "" > empty_name.log 2>&1 || status=$?
+[ "$status" -eq 2 ] || fail "--resume \"\" gave exit $status, not 2"
+grep -q "^dualcontact: --resume needs the output folder of the checkpoint, and was given an empty name" \
+  empty_name.log || fail "--resume \"\" does not say why it is refused"
+listing | cmp -s before.txt - || fail "--resume \"\" changed the folder out/"
+
+# A damaged checkpoint: exit 3, naming the file and what is wrong. On 1
+# rank (state.txt and the forest's files are checked before the number of
+# ranks), but for the cells, which are counted on the mesh read.
+damaged() {
+  local name="$1" np="$2" message="$3"
+  shift 3
+  rm -rf damaged
+  cp -r out damaged
+  "$@"
+  status=0
+  if [ "$np" = 1 ]; then
+    "$program" "$scene" "${settings[@]}" --resume damaged/ > "$name.log" 2>&1 || status=$?
+  else
+    "$mpirun" --oversubscribe -np 2 "$program" "$scene" "${settings[@]}" \
+      --resume damaged/ > "$name.log" 2>&1 || status=$?
+  fi
+  [ "$status" -eq 3 ] || fail "a checkpoint with $name gave exit $status, not 3 (see $work/$name.log)"
+  grep -qF "dualcontact: The checkpoint file damaged/checkpoint/$message" "$name.log" ||
+    fail "a checkpoint with $name does not name the file and what is wrong (see $work/$name.log)"
+}
+state=damaged/checkpoint/state.txt
+damaged ranks_x 1 "state.txt is damaged: 'ranks' is 'x', not a whole number" \
+  sed -i 's/^ranks .*/ranks x/' $state
+damaged ranks_0 1 "state.txt is damaged: 'ranks' is '0', less than 1" \
+  sed -i 's/^ranks .*/ranks 0/' $state
+damaged time_nan 1 "state.txt is damaged: 'time' is 'nan', not a finite number" \
+  sed -i 's/^time .*/time nan/' $state
+damaged mesh_emptied 1 "mesh is damaged: it has 0 bytes" \
+  sh -c 'for f in damaged/checkpoint/mesh*; do : > "$f"; done'
+damaged cells_7 2 "state.txt is damaged: its 'mesh' gives 7 cells" \
+  sed -i 's/^mesh \([0-9]*\) [0-9]* /mesh \1 7 /' $state
+echo "check_resume: the resumed run repeats the first run's numbers; an empty folder name and a damaged checkpoint are refused"

@@ -156,7 +156,12 @@ namespace dualcontact
      * output folder, checked against this run's parameters and number of
      * ranks (InputError if it differs, naming the first entry), with
      * steps.csv, iterations.csv and probes_steps.csv cut back to its step.
-     * Returns that step; `control` goes on from it.
+     * Returns that step; `control` goes on from it. A damaged checkpoint (a
+     * field of state.txt missing, not a number, out of its range or not
+     * holding together with the others or with the mesh; a file of the
+     * forest missing, or not of the size and CRC-32 written) is an
+     * InputError (exit_cannot_read_file) that names the file, before any
+     * value of it is used.
      */
     unsigned int
     load_checkpoint(StepControl &control);
@@ -385,7 +390,9 @@ namespace dualcontact
      * The mesh and fields of the checkpoint in `folder`, with its record:
      * the coarse mesh refined as the saved forest and set up, u, u^{n-1},
      * the multipliers and the threshold; the next step starts without the
-     * predictor, with a new preconditioner.
+     * predictor, with a new preconditioner. Files that deal.II cannot read,
+     * or a mesh without the cells and DoFs of the record's 'mesh', are a
+     * damaged checkpoint (InputError).
      */
     void
     load_mesh_and_fields(const std::string      &folder,

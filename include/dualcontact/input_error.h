@@ -70,6 +70,33 @@ namespace dualcontact
   }
 
   /**
+   * The message of `exception` for one line of an error: of deal.II's, the
+   * text after "Additional information:" without the stack trace; its
+   * lines joined, the rules of dashes left out, at most 300 characters.
+   */
+  inline std::string
+  exception_message(const std::exception &exception)
+  {
+    std::string what = exception.what();
+    const auto  info = what.find("Additional information:");
+    if (info != std::string::npos)
+      what = what.substr(info + 23);
+    const auto trace = what.find("Stacktrace:");
+    if (trace != std::string::npos)
+      what = what.substr(0, trace);
+    std::string        line;
+    std::istringstream lines(what);
+    std::string        message;
+    while (std::getline(lines, line))
+      if (!line.empty() && line.find_first_not_of(" \t-") != std::string::npos)
+        message += (message.empty() ? "" : " ") +
+                   line.substr(line.find_first_not_of(" \t"));
+    if (message.size() > 300)
+      message = message.substr(0, 300) + "...";
+    return message;
+  }
+
+  /**
    * A number for a message, in scientific notation with three significant
    * digits (std::to_string writes 1e-10 as 0.000000).
    */

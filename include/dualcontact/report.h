@@ -194,15 +194,13 @@ namespace dualcontact
     /**
      * A run resumed from the checkpoint at step `last_step` (time `time`)
      * goes on with the stopped run's tables: steps.csv and iterations.csv
-     * keep their rows up to it, the step numbers and the total time go on
-     * from it, and steps.gp spans the steps before it (their state from
-     * loop_figure_state()).
+     * keep their rows up to it, and the step numbers and the total time go
+     * on from it.
      */
     void
     resume(const unsigned int last_step,
            const double       time,
-           const double       total_time,
-           const std::string &loop_figure_state);
+           const double       total_time);
 
     /** After print_scene(): the line that says where a resumed run began. */
     void
@@ -215,6 +213,14 @@ namespace dualcontact
     /** What a checkpoint keeps of steps.gp's ranges. */
     std::string
     loop_figure_state() const;
+
+    /**
+     * A resumed run's steps.gp spans the steps before it too: their ranges
+     * from loop_figure_state(). False, and nothing changed, if `state` is
+     * not one it writes (a damaged checkpoint). Every rank checks it alike.
+     */
+    bool
+    load_loop_figure_state(const std::string &state);
 
     /** The convergence table, and the timing summary if asked for. */
     void

@@ -96,8 +96,17 @@ namespace dualcontact
      */
     std::string
     state() const;
-    void
-    load(const std::string &state);
+
+    /**
+     * Go on from `state`, which the path reached at load step `step`, time
+     * `step_time` (a checkpoint's record). False, and nothing changed, if
+     * it is not a state that state() writes on this path at that step and
+     * time (a damaged record).
+     */
+    bool
+    load(const std::string &state,
+         const unsigned int step,
+         const double       step_time);
 
   private:
     double

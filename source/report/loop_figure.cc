@@ -1,7 +1,5 @@
 #include "loop_figure.h"
 
-#include <deal.II/base/exceptions.h>
-
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -68,27 +66,40 @@ namespace dualcontact
   }
 
   template <int dim>
-  void
+  bool
   LoopFigure<dim>::load(const std::string &state)
   {
+    // read into a copy: a state that state() does not write changes nothing
+    LoopFigure<dim>    read;
     std::istringstream in(state);
-    in >> empty >> normal;
+    in >> read.empty >> read.normal;
     for (unsigned int c = 0; c < dim; ++c)
-      in >> force[c].lowest >> force[c].highest >> obstacle[c].lowest >>
-        obstacle[c].highest;
+      in >> read.force[c].lowest >> read.force[c].highest >>
+        read.obstacle[c].lowest >> read.obstacle[c].highest;
     std::size_t n_boundaries = 0;
     in >> n_boundaries;
-    boundary.clear();
     for (std::size_t b = 0; b < n_boundaries && in; ++b)
       {
         types::boundary_id id = 0;
         in >> id;
-        for (Range &range : boundary[id])
+        for (Range &range : read.boundary[id])
           in >> range.lowest >> range.highest;
       }
-    AssertThrow(in && normal < dim,
-                dealii::ExcMessage("The loop figure's state '" + state +
-                                   "' is not one that state() writes."));
+    // every range spans 0 (Range::add() starts from it)
+    const auto spans_zero = [](const std::array<Range, dim> &ranges) {
+      for (const Range &range : ranges)
+        if (!(range.lowest <= 0. && 0. <= range.highest))
+          return false;
+      return true;
+    };
+    bool whole = in && (in >> std::ws).eof() && read.normal < dim &&
+                 read.boundary.size() == n_boundaries &&
+                 spans_zero(read.force) && spans_zero(read.obstacle);
+    for (const auto &[id, ranges] : read.boundary)
+      whole = whole && spans_zero(ranges);
+    if (whole)
+      *this = read;
+    return whole;
   }
 
   template <int dim>

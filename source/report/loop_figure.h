@@ -44,7 +44,9 @@ namespace dualcontact
      */
     std::string
     state() const;
-    void
+
+    /** False, and nothing changed, if `state` is not one state() writes. */
+    bool
     load(const std::string &state);
 
   private:

@@ -2,7 +2,8 @@
 // cycle stopped after its checkpoint and resumed gives the numbers of the
 // run that was not stopped, on a fixed mesh and on one adapted at every
 // step; a checkpoint of another scene, of another number of ranks, or none,
-// is refused. Tagged [path]: ctest runs them on 1 and 2 ranks.
+// is refused, and a damaged one too, naming the file and what is wrong.
+// Tagged [path]: ctest runs them on 1 and 2 ranks.
 
 #include <deal.II/base/mpi.h>
 
@@ -13,6 +14,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "scene_run.h"
@@ -182,7 +184,8 @@ TEST_CASE("Restart: a Cattaneo-Mindlin cycle of twelve steps resumed from "
 }
 
 TEST_CASE("Restart: a folder without a checkpoint, a checkpoint of another "
-          "scene or of another number of ranks is refused, naming why",
+          "scene or of another number of ranks, or a damaged one is "
+          "refused, naming why",
           "[path]")
 {
   const Run  run("cattaneo_mindlin.prm", cycle);
@@ -225,7 +228,106 @@ TEST_CASE("Restart: a folder without a checkpoint, a checkpoint of another "
                      "resume it on 2"));
     }
 
+  // A damaged checkpoint (an edited state.txt, a copy cut short, a disk
+  // that filled up) is bad input, exit 3, naming the file and what is
+  // wrong with it, whatever part is damaged; each damage is made on the
+  // checkpoint as the run wrote it.
+  namespace fs             = std::filesystem;
+  const std::string folder = checkpoint_folder(run.directory);
+  const std::string state  = folder + "/state.txt";
+  const bool        root   = Utilities::MPI::this_mpi_process(run.comm) == 0;
+  if (root)
+    fs::copy(folder, folder + ".whole", fs::copy_options::recursive);
+  const auto damaged = [&](const std::function<void()> &damage) {
+    MPI_Barrier(run.comm);
+    if (root)
+      {
+        fs::remove_all(folder);
+        fs::copy(folder + ".whole", folder, fs::copy_options::recursive);
+        damage();
+      }
+    MPI_Barrier(run.comm);
+    return resume("", run.comm);
+  };
+  // state.txt with the line of `key` given the value `value`, or left
+  // out if `value` is "-"
+  const auto set_field = [&](const std::string &key, const std::string &value) {
+    return [=]() {
+      std::istringstream lines(read_text(state));
+      std::ostringstream out;
+      for (std::string line; std::getline(lines, line);)
+        if (line.compare(0, key.size() + 1, key + " ") != 0)
+          out << line << '\n';
+        else if (value != "-")
+          out << key << ' ' << value << '\n';
+      std::ofstream(state) << out.str();
+    };
+  };
+  const auto write_file = [](const std::string &file, const std::string &text) {
+    return [=]() { std::ofstream(file) << text; };
+  };
+  const std::string whole_state = read_text(state);
+  const auto        field       = [&whole_state](const std::string &key) {
+    const std::size_t begin =
+      whole_state.find("\n" + key + " ") + 2 + key.size();
+    return whole_state.substr(begin, whole_state.find('\n', begin) - begin);
+  };
+  const std::string mesh = field("mesh"); // cycle, cells, DoFs
+  const std::vector<std::pair<std::function<void()>, std::string>> damages = {
+    // a field that does not parse, or is not finite
+    {set_field("ranks", "x"),
+     state + " is damaged: 'ranks' is 'x', not a whole number"},
+    {set_field("step", field("step") + " 2"), state + " is damaged: 'step' is"},
+    {set_field("time", "nan"),
+     state + " is damaged: 'time' is 'nan', not a finite number"},
+    {set_field("size_v_norm", "1e999"), state + " is damaged: 'size_v_norm'"},
+    // out of its range
+    {set_field("ranks", "0"),
+     state + " is damaged: 'ranks' is '0', less than 1"},
+    {set_field("size_l1_norm", "-1"),
+     state + " is damaged: 'size_l1_norm' is '-1', less than 0"},
+    // missing, or a field too many
+    {set_field("dissipated", "-"),
+     state + " is damaged: it has no 'dissipated'"},
+    {write_file(state, ""), state + " is damaged: it has no"},
+    {write_file(state, whole_state + "extra 1\n"),
+     state + " is damaged: 'extra' is not a field of a checkpoint"},
+    {write_file(state, whole_state.substr(0, whole_state.size() - 3)),
+     state + " is damaged: its last line has no end"},
+    // not holding together: the time with the step control's state, the
+    // cells with the mesh
+    {set_field("time", "1.4"), state + " is damaged: 'step_control' is"},
+    {set_field("mesh", "0 7" + mesh.substr(mesh.rfind(' '))),
+     state + " is damaged: its 'mesh' gives 7 cells and"},
+    // the forest's files emptied, of zeros or missing, parameters.prm
+    // emptied
+    {[&]() {
+       for (const auto &entry : fs::directory_iterator(folder))
+         if (entry.path().filename().string().compare(0, 4, "mesh") == 0)
+           std::ofstream(entry.path());
+     },
+     folder + "/mesh is damaged: it has 0 bytes"},
+    {[&]() {
+       const std::string fields = folder + "/mesh_fixed.data";
+       const std::string zeros(fs::file_size(fields), '\0');
+       std::ofstream(fields) << zeros;
+     },
+     folder + "/mesh_fixed.data is damaged: its CRC-32 is"},
+    {[&]() { fs::remove(folder + "/mesh.info"); },
+     folder + "/mesh.info is damaged: it is missing"},
+    {write_file(folder + "/parameters.prm", ""),
+     folder + "/parameters.prm is damaged"}};
+  for (const auto &[damage, message] : damages)
+    {
+      const CaughtError error = damaged(damage);
+      INFO(message);
+      INFO(error.message);
+      CHECK(error.code == exit_cannot_read_file);
+      CHECK(contains(error.message, "The checkpoint file " + message));
+    }
+
   // no checkpoint
+  remove_directory(folder + ".whole", run.comm);
   remove_directory(checkpoint_folder(run.directory), run.comm);
   const CaughtError none = resume("", run.comm);
   CHECK(none.code == exit_cannot_read_file);
