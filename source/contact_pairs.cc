@@ -12,12 +12,14 @@
 #include <deal.II/fe/fe.h>
 
 #include <dualcontact/contact_set.h>
+#include <dualcontact/discretization.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/mortar.h>
 #include <dualcontact/mortar_3d.h>
 #include <dualcontact/parameter_helpers.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -76,19 +78,61 @@ namespace dualcontact
     // coordinate xi along the face; in 3D a triangle's vertices, or the
     // (k + 1)^2 support points of FE_Q(k) on a quadrilateral in
     // lexicographic order, mortar_3d.h), for a hanging node the
-    // first DoFs of the nodes it hangs on and their weights, its outward
-    // normal, and the body it belongs to.
+    // DoFs of the nodes it hangs on and their weights (on the master
+    // surface: the slave's hanging nodes are condensed from the
+    // constraints, condense_hanging_nodes()), its outward normal, and the
+    // body it belongs to.
     template <int dim>
     struct SurfaceFace
     {
       std::vector<Point<dim>>                               x;
       std::vector<std::array<types::global_dof_index, dim>> dofs;
       std::vector<double>                                   xi;
-      std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+      std::vector<std::vector<
+        std::pair<std::array<types::global_dof_index, dim>, double>>>
                      parents;
       Tensor<1, dim> normal;
       unsigned int   body = 0;
     };
+
+    // The DoFs, one per component, of the support points whose first DoF
+    // is in `keys`, from the cells this rank has (owned and ghost): the
+    // nodes that hanging nodes of the owned faces hang on. At degree 2-3 a
+    // node of a surface may hang on one off it: where the surface's
+    // boundary id ends at a coarse edge (a flat boundary split into ids),
+    // the DoF inside that edge belongs to the coarse neighbour's face of
+    // the other id alone.
+    template <int dim>
+    std::map<types::global_dof_index, std::array<types::global_dof_index, dim>>
+    support_point_dofs(const DoFHandler<dim>                   &dof_handler,
+                       const std::set<types::global_dof_index> &keys)
+    {
+      std::map<types::global_dof_index,
+               std::array<types::global_dof_index, dim>>
+        result;
+      if (keys.empty())
+        return result;
+      const FiniteElement<dim>            &fe = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            cell->get_dof_indices(dof_indices);
+            std::map<unsigned int, std::array<types::global_dof_index, dim>>
+              by_base;
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const auto [component, base] = fe.system_to_component_index(i);
+                by_base[base][component]     = dof_indices[i];
+              }
+            for (const auto &[base, dofs] : by_base)
+              if (keys.count(dofs[0]))
+                result[dofs[0]] = dofs;
+            if (result.size() == keys.size())
+              break;
+          }
+      return result;
+    }
 
     // The support points of FE_Q(k) on face f of a cell: the DoFs of each
     // (one per component) into dofs_of[base], base the point's number in
@@ -105,7 +149,7 @@ namespace dualcontact
     {
       const FiniteElement<dim> &fe = cell->get_fe();
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        if (fe.has_support_on_face(i, f))
+        if (support_on_face(fe, i, f))
           {
             const auto [component, base] = fe.system_to_component_index(i);
             dofs_of[base][component]     = dof_indices[i];
@@ -116,7 +160,10 @@ namespace dualcontact
           }
     }
 
-    // The faces with boundary id `id` of the cells `take` accepts.
+    // The faces with boundary id `id` of the cells `take` accepts, with
+    // the nodes their hanging nodes hang on if `with_parents` (the owned
+    // faces of the master surface: their cells' neighbours, which hold
+    // those nodes, are owned or ghost cells).
     template <int dim, typename Predicate>
     std::vector<SurfaceFace<dim>>
     surface_faces(const Mapping<dim>              &mapping,
@@ -124,7 +171,8 @@ namespace dualcontact
                   const AffineConstraints<double> &hanging,
                   const types::boundary_id         id,
                   const std::vector<unsigned int> &body_of_coarse_cell,
-                  const Predicate                 &take)
+                  const Predicate                 &take,
+                  const bool                       with_parents)
     {
       const FiniteElement<dim>            &fe = dof_handler.get_fe();
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
@@ -277,10 +325,17 @@ namespace dualcontact
                   face.normal *= -1.;
                 for (const auto &dofs : face.dofs)
                   {
+                    // the first DoFs of the nodes it hangs on, their other
+                    // DoFs below
                     face.parents.emplace_back();
-                    if (hanging.is_constrained(dofs[0]))
-                      face.parents.back() =
-                        *hanging.get_constraint_entries(dofs[0]);
+                    if (with_parents && hanging.is_constrained(dofs[0]))
+                      for (const auto &[parent, w] :
+                           *hanging.get_constraint_entries(dofs[0]))
+                        {
+                          std::array<types::global_dof_index, dim> first;
+                          first.fill(parent);
+                          face.parents.back().emplace_back(first, w);
+                        }
                     AssertThrow(face.parents.back().size() <= max_parents(fe),
                                 ExcMessage("A hanging node of a contact pair's "
                                            "surface hangs on more nodes than "
@@ -288,6 +343,24 @@ namespace dualcontact
                   }
                 faces.push_back(face);
               }
+      std::set<types::global_dof_index> hung_on;
+      for (const SurfaceFace<dim> &face : faces)
+        for (const auto &parents : face.parents)
+          for (const auto &[dofs, w] : parents)
+            hung_on.insert(dofs[0]);
+      const auto parent_dofs = support_point_dofs(dof_handler, hung_on);
+      for (SurfaceFace<dim> &face : faces)
+        for (auto &parents : face.parents)
+          for (auto &[dofs, w] : parents)
+            {
+              const auto it = parent_dofs.find(dofs[0]);
+              AssertThrow(it != parent_dofs.end(),
+                          ExcMessage("A node that a hanging node of a contact "
+                                     "pair's surface hangs on lies on no cell "
+                                     "of the rank that owns the hanging "
+                                     "node's face."));
+              dofs = it->second;
+            }
       return faces;
     }
 
@@ -308,6 +381,66 @@ namespace dualcontact
           dofs.push_back(face.dofs[k]);
           points.push_back(face.x[k]);
         }
+      return it->second;
+    }
+
+    // Whether a slave node's entries M_sj (their sum `sum_m`) give it a
+    // point of the master to measure its gap to: sum_j c_sj x_j,
+    // c_sj = M_sj / sum_m, is a mean of the master nodes it couples with
+    // (the c_sj sum to one), and where the master covers the node's
+    // support it lies among them. Where the master covers only a part of
+    // the support away from the node (the master's end, or the edge of the
+    // master faces that face the slave, cuts a slave face near its other
+    // end), psi_s changes sign on the covered part, sum_m is a small
+    // difference of larger M_sj, and the point lies far beyond those nodes
+    // (on two coarse discs of radius 3, 7 beyond them, and a gap of -7): no
+    // gap can be measured to it. The point must lie within the box of the
+    // master nodes the node couples with, enlarged on every side by the
+    // box's diameter: the partly covered nodes of the shipped pairs keep it
+    // within 0.6 of the diameter but for six of two_spheres' last mesh,
+    // 3.4 beyond (sum_j |M_sj| = 30 sum_m), and the false overlaps of
+    // coarse discs and balls come from points 9-11 beyond. A node whose
+    // point does not is taken as facing no master, as one beyond the
+    // master's end; its covered weight sum_m is then a small part of m_s.
+    template <int dim>
+    bool
+    sees_master_point(
+      const std::vector<std::pair<unsigned int, double>> &entries,
+      const double                                        sum_m,
+      const std::vector<Point<dim>>                      &master_points)
+    {
+      Point<dim> facing, lower, upper;
+      bool       first = true;
+      for (const auto &[j, m] : entries)
+        if (m != 0.)
+          {
+            const Point<dim> &x = master_points[j];
+            facing += (m / sum_m) * x;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = first ? x[d] : std::min(lower[d], x[d]);
+                upper[d] = first ? x[d] : std::max(upper[d], x[d]);
+              }
+            first = false;
+          }
+      const double diameter = lower.distance(upper);
+      for (unsigned int d = 0; d < dim; ++d)
+        if (facing[d] < lower[d] - diameter || facing[d] > upper[d] + diameter)
+          return false;
+      return true;
+    }
+
+    // The number of the node with the first DoF `dof` in `number`, which
+    // holds it: the nodes of the faces the numbering was made from (a
+    // missing one is an internal error, named so)
+    unsigned int
+    number_of(const std::map<types::global_dof_index, unsigned int> &number,
+              const types::global_dof_index                          dof)
+    {
+      const auto it = number.find(dof);
+      AssertThrow(it != number.end(),
+                  ExcMessage("A node of a contact pair is missing from the "
+                             "numbering of its surface's nodes."));
       return it->second;
     }
 
@@ -427,10 +560,22 @@ namespace dualcontact
       for (const auto &[rank, row] : Utilities::MPI::some_to_some(comm, rows))
         for (std::size_t i = 0; i < row.size();)
           {
-            const unsigned int p =
-              number.at(static_cast<types::global_dof_index>(row[i]));
-            coupling.weight[p] += row[i + 1];
             const auto n = static_cast<std::size_t>(row[i + 2]);
+            // At degree 2-3, where the slave's boundary id ends at a coarse
+            // edge, h may hang on a node off the slave surface (in that
+            // edge, support_point_dofs()): that node is no contact node and
+            // carries no multiplier, and its share of h's row is left out,
+            // as the rigid obstacle's contact set leaves out the weight a
+            // hanging node hands to a node off Gamma_C.
+            const auto found =
+              number.find(static_cast<types::global_dof_index>(row[i]));
+            if (found == number.end())
+              {
+                i += 3 + 2 * n;
+                continue;
+              }
+            const unsigned int p = found->second;
+            coupling.weight[p] += row[i + 1];
             std::map<unsigned int, double> merged(coupling.master[p].begin(),
                                                   coupling.master[p].end());
             for (std::size_t e = 0; e < n; ++e)
@@ -465,8 +610,9 @@ namespace dualcontact
               for (unsigned int p = 0; p < max_parents; ++p)
                 {
                   const bool has = p < face.parents[k].size();
-                  integers.push_back(has ? face.parents[k][p].first :
-                                           numbers::invalid_dof_index);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    integers.push_back(has ? face.parents[k][p].first[d] :
+                                             numbers::invalid_dof_index);
                   reals.push_back(has ? face.parents[k][p].second : 0.);
                 }
             }
@@ -474,11 +620,14 @@ namespace dualcontact
             reals.push_back(face.normal[d]);
           integers.push_back(face.body);
         }
-      const unsigned int per_node   = dim + max_parents;
-      const unsigned int n_reals    = n * (1 + per_node) + dim;
-      const unsigned int n_integers = n * per_node + 1;
-      const auto         all_reals  = Utilities::MPI::all_gather(comm, reals);
-      const auto all_integers = Utilities::MPI::all_gather(comm, integers);
+      // per node: its position, xi and the parents' weights; its DoFs and
+      // the parents' DoFs
+      const unsigned int reals_per_node    = dim + 1 + max_parents;
+      const unsigned int integers_per_node = dim * (1 + max_parents);
+      const unsigned int n_reals           = n * reals_per_node + dim;
+      const unsigned int n_integers        = n * integers_per_node + 1;
+      const auto         all_reals = Utilities::MPI::all_gather(comm, reals);
+      const auto all_integers      = Utilities::MPI::all_gather(comm, integers);
       std::vector<SurfaceFace<dim>> faces;
       for (unsigned int rank = 0; rank < all_reals.size(); ++rank)
         for (unsigned int i = 0; i < all_integers[rank].size() / n_integers;
@@ -494,8 +643,8 @@ namespace dualcontact
             face.parents.resize(n);
             for (unsigned int k = 0; k < n; ++k)
               {
-                const double                  *rk = r + k * (1 + per_node);
-                const types::global_dof_index *zk = z + k * per_node;
+                const double                  *rk = r + k * reals_per_node;
+                const types::global_dof_index *zk = z + k * integers_per_node;
                 for (unsigned int d = 0; d < dim; ++d)
                   {
                     face.x[k][d]    = rk[d];
@@ -503,12 +652,17 @@ namespace dualcontact
                   }
                 face.xi[k] = rk[dim];
                 for (unsigned int p = 0; p < max_parents; ++p)
-                  if (zk[dim + p] != numbers::invalid_dof_index)
-                    face.parents[k].emplace_back(zk[dim + p], rk[dim + 1 + p]);
+                  if (zk[dim * (1 + p)] != numbers::invalid_dof_index)
+                    {
+                      std::array<types::global_dof_index, dim> dofs;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        dofs[d] = zk[dim * (1 + p) + d];
+                      face.parents[k].emplace_back(dofs, rk[dim + 1 + p]);
+                    }
               }
             for (unsigned int d = 0; d < dim; ++d)
-              face.normal[d] = r[n * (1 + per_node) + d];
-            face.body = z[n * per_node];
+              face.normal[d] = r[n * reals_per_node + d];
+            face.body = z[n * integers_per_node];
             faces.push_back(face);
           }
       return faces;
@@ -558,25 +712,25 @@ namespace dualcontact
         // the master surface, whole on every rank; the slave faces of the
         // owned and ghost cells, which hold every face at an owned node
         const auto master_faces =
-          gather(surface_faces(mapping,
-                               dof_handler,
-                               hanging_node_constraints,
-                               master_id,
-                               body_of_coarse_cell,
-                               [](const auto &cell) {
-                                 return cell->is_locally_owned();
-                               }),
+          gather(surface_faces(
+                   mapping,
+                   dof_handler,
+                   hanging_node_constraints,
+                   master_id,
+                   body_of_coarse_cell,
+                   [](const auto &cell) { return cell->is_locally_owned(); },
+                   /*with_parents=*/true),
                  n_face_nodes,
                  max_parents(fe),
                  comm);
-        const auto slave_faces = surface_faces(mapping,
-                                               dof_handler,
-                                               hanging_node_constraints,
-                                               slave_id,
-                                               body_of_coarse_cell,
-                                               [](const auto &cell) {
-                                                 return !cell->is_artificial();
-                                               });
+        const auto slave_faces = surface_faces(
+          mapping,
+          dof_handler,
+          hanging_node_constraints,
+          slave_id,
+          body_of_coarse_cell,
+          [](const auto &cell) { return !cell->is_artificial(); },
+          /*with_parents=*/false);
         const auto n_slave_faces =
           Utilities::MPI::sum(static_cast<unsigned int>(slave_faces.size()),
                               comm);
@@ -624,10 +778,11 @@ namespace dualcontact
                                       master_segments);
         else
           {
-            // a slave face sees the master faces in front of it and behind
-            // it as far as the two surfaces reach: in the reference
-            // configuration two curved bodies part as r^2 / (2 R*), and a
-            // node that a far master face gets is one with a large gap
+            // a slave face sees the master faces in front of it as far as
+            // the two surfaces reach: in the reference configuration two
+            // curved bodies part as r^2 / (2 R*), and a node that a far
+            // master face gets is one with a large gap; behind it, only
+            // those within mortar::facing_tolerance()
             std::vector<Point<dim>> both(master_points);
             both.insert(both.end(), slave_points.begin(), slave_points.end());
             const auto [lower, upper] =
@@ -647,21 +802,31 @@ namespace dualcontact
         std::vector<Tensor<1, dim>> master_normals(master_points.size());
         for (const SurfaceFace<dim> &face : master_faces)
           for (const auto &dofs : face.dofs)
-            master_normals[master_number.at(dofs[0])] += face.normal;
+            master_normals[number_of(master_number, dofs[0])] += face.normal;
         // A hanging master node j moves as sum_p w_jp v_p: in a slave
         // node's displacement coupling its c_sj goes to the nodes p it
-        // hangs on (also nodes of the master surface), so that the coupling
-        // holds only DoFs that are solved for. Its position stays in the
+        // hangs on, so that the coupling holds only DoFs that are solved
+        // for. They are nodes of the master surface, or, at degree 2-3
+        // where the master's boundary id ends at a coarse edge, of the
+        // face of the other id beside it: those are numbered after the
+        // surface's nodes, in master_dofs only. Its position stays in the
         // gap: on a curved master it lies off the chord of its parents.
         std::vector<std::vector<std::pair<unsigned int, double>>>
           master_parents(master_points.size());
         for (const SurfaceFace<dim> &face : master_faces)
           for (unsigned int k = 0; k < face.dofs.size(); ++k)
             {
-              auto &parents = master_parents[master_number.at(face.dofs[k][0])];
+              auto &parents =
+                master_parents[number_of(master_number, face.dofs[k][0])];
               parents.clear();
-              for (const auto &[dof, w] : face.parents[k])
-                parents.emplace_back(master_number.at(dof), w);
+              for (const auto &[dofs, w] : face.parents[k])
+                {
+                  const auto [it, inserted] =
+                    master_number.emplace(dofs[0], master_dofs.size());
+                  if (inserted)
+                    master_dofs.push_back(dofs);
+                  parents.emplace_back(it->second, w);
+                }
             }
 
         // the nodes of this pair: their masters, c_sj = M_sj / sum_j M_sj
@@ -675,11 +840,12 @@ namespace dualcontact
             const auto it = slave_id_of.find(nodes[s].dofs[0]);
             if (it == slave_id_of.end() || it->second != slave_id)
               continue;
-            const unsigned int i     = slave_number.at(nodes[s].dofs[0]);
+            const unsigned int i = number_of(slave_number, nodes[s].dofs[0]);
             double             sum_m = 0.;
             for (const auto &[j, m] : coupling.master[i])
               sum_m += m;
-            if (!(sum_m > 1e-12 * coupling.weight[i]))
+            if (!(sum_m > 1e-12 * coupling.weight[i]) ||
+                !sees_master_point(coupling.master[i], sum_m, master_points))
               {
                 keep[s] = false;
                 ++uncovered;

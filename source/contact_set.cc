@@ -51,12 +51,14 @@ namespace dualcontact
     Vector<double>            local_normals(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
 
-    // Candidate nodes: cell-local support points on contact faces, grouped
-    // by their scalar shape function (the "base" index), from the owned
-    // and the ghost cells: a node this rank owns may lie on contact faces
-    // of other ranks' cells only (a vertex of a triangle fan whose owned
-    // triangle touches Gamma_C at that vertex alone). Weights and normals
-    // come from the owned cells, summed over the ranks.
+    // Candidate nodes: cell-local support points on contact faces (as
+    // support_on_face() finds them: on a triangle not the vertex opposite
+    // the face), grouped by their scalar shape function (the "base"
+    // index), from the owned and the ghost cells: a node this rank owns
+    // may lie on contact faces of other ranks' cells only (a vertex of a
+    // triangle fan whose owned triangle touches Gamma_C at that vertex
+    // alone). Weights and normals come from the owned cells, summed over
+    // the ranks.
     std::map<types::global_dof_index, ContactNode<dim>> candidates;
     double h_min = std::numeric_limits<double>::max();
 
@@ -92,7 +94,7 @@ namespace dualcontact
 
               std::map<unsigned int, ContactNode<dim>> on_face;
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                if (fe.has_support_on_face(i, f))
+                if (support_on_face(fe, i, f))
                   {
                     const auto [component, base] =
                       fe.system_to_component_index(i);

@@ -13,6 +13,7 @@
 #include <dualcontact/discretization.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace dualcontact
 {
@@ -119,6 +120,25 @@ namespace dualcontact
   }
 
   template <int dim>
+  bool
+  support_on_face(const FiniteElement<dim> &fe,
+                  const unsigned int        i,
+                  const unsigned int        face)
+  {
+    const ReferenceCell &cell = fe.reference_cell();
+    if (cell.is_hyper_cube())
+      return fe.has_support_on_face(i, face);
+    // the reference simplex's vertices are the origin and the unit
+    // vectors: a support point on a face (a vertex, the midpoint of a line)
+    // lies in the face's plane to round-off, one off it a distance of the
+    // order of one away
+    const Point<dim> corner =
+      cell.template vertex<dim>(cell.face_to_cell_vertices(face, 0, 1));
+    return std::abs(cell.template unit_normal_vectors<dim>(face) *
+                    (fe.unit_support_point(i) - corner)) <= 1e-12;
+  }
+
+  template <int dim>
   CellKind
   cell_kind(const Triangulation<dim> &triangulation)
   {
@@ -150,6 +170,10 @@ namespace dualcontact
   face_quadrature(const FiniteElement<2> &, unsigned int);
   template Quadrature<2>
   face_quadrature(const FiniteElement<3> &, unsigned int);
+  template bool
+  support_on_face(const FiniteElement<2> &, unsigned int, unsigned int);
+  template bool
+  support_on_face(const FiniteElement<3> &, unsigned int, unsigned int);
   template CellKind
   cell_kind(const Triangulation<2> &);
   template CellKind

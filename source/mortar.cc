@@ -22,6 +22,12 @@ namespace dualcontact
       return weight[s] > 0. ? sum / weight[s] : 0.;
     }
 
+    double
+    facing_tolerance(const double slave_size, const double master_size)
+    {
+      return std::max(slave_size, master_size);
+    }
+
     namespace
     {
       // The nodes of a segment in the order of its basis: the end points
@@ -40,6 +46,26 @@ namespace dualcontact
         std::vector<unsigned int> n = {s.node[0], s.node[1]};
         n.insert(n.end(), s.inner_node.begin(), s.inner_node.end());
         return n;
+      }
+
+      /**
+       * Whether a master point x_m and the slave point x_s it faces (the
+       * two ends of a line along the slave's normal) lie on each other's
+       * front side, each up to `tolerance`: n_s . (x_m - x_s) and
+       * n_m . (x_s - x_m) at least -tolerance. Faces without normals
+       * (zero) are taken as facing.
+       */
+      bool
+      in_front(const Tensor<1, 2> &n_s,
+               const Tensor<1, 2> &n_m,
+               const Point<2>     &x_s,
+               const Point<2>     &x_m,
+               const double        tolerance)
+      {
+        if (!(n_s.norm() > 0. && n_m.norm() > 0.))
+          return true;
+        return n_s * (x_m - x_s) >= -tolerance &&
+               n_m * (x_s - x_m) >= -tolerance;
       }
 
       // the Lagrange polynomials through the nodes `xi`, at `x`
@@ -116,6 +142,26 @@ namespace dualcontact
               const double hi = std::min(1., std::max(xi0, xi1));
               if (hi <= lo)
                 continue;
+              // the two segments face each other where they overlap: at
+              // both ends of the overlap (the distance between the chords
+              // is affine in between), each lies in front of the other
+              // up to the longer one's length (facing_tolerance())
+              const double tolerance =
+                facing_tolerance(length, (m.x[1] - m.x[0]).norm());
+              const auto on_master = [&](const double xi) {
+                return m.x[0] + (xi - xi0) / (xi1 - xi0) * (m.x[1] - m.x[0]);
+              };
+              if (!in_front(s.normal,
+                            m.normal,
+                            s.x[0] + lo * along,
+                            on_master(lo),
+                            tolerance) ||
+                  !in_front(s.normal,
+                            m.normal,
+                            s.x[0] + hi * along,
+                            on_master(hi),
+                            tolerance))
+                continue;
               const std::vector<double>       xi_m = node_coordinates(m);
               const std::vector<unsigned int> n_m  = node_numbers(m);
               // psi_a phi_b has degree k + k_master: Gauss points enough
@@ -155,12 +201,16 @@ namespace dualcontact
       coupling.master.resize(n_slave_nodes);
       std::vector<Point<2>>     position(n_slave_nodes);
       std::vector<Tensor<1, 2>> normal(n_slave_nodes);
+      // the longest of a node's segments, for facing_tolerance()
+      std::vector<double> longest(n_slave_nodes, 0.);
       for (const Segment &s : slave)
         for (const unsigned int k : {0u, 1u})
           {
-            coupling.weight[s.node[k]] += 0.5 * (s.x[1] - s.x[0]).norm();
+            const double length = (s.x[1] - s.x[0]).norm();
+            coupling.weight[s.node[k]] += 0.5 * length;
             position[s.node[k]] = s.x[k];
             normal[s.node[k]] += s.normal;
+            longest[s.node[k]] = std::max(longest[s.node[k]], length);
           }
       for (unsigned int i = 0; i < n_slave_nodes; ++i)
         {
@@ -183,6 +233,14 @@ namespace dualcontact
               const double       t = (d[1] * along[0] - d[0] * along[1]) / det;
               const double       eta = (n[0] * d[1] - n[1] * d[0]) / det;
               if (eta < -1e-12 || eta > 1. + 1e-12 || std::abs(t) >= best)
+                continue;
+              // the met point and the node face each other, as the dual
+              // mortar's segments do
+              if (!in_front(n,
+                            m.normal,
+                            position[i],
+                            position[i] + t * n,
+                            facing_tolerance(longest[i], along.norm())))
                 continue;
               best           = std::abs(t);
               const double e = std::clamp(eta, 0., 1.);

@@ -486,6 +486,49 @@ namespace dualcontact
       }
 
       /**
+       * A face's diameter: the largest distance of two of its vertices.
+       */
+      double
+      diameter(const Face &face)
+      {
+        double d = 0.;
+        for (const Point<3> &p : face.x)
+          for (const Point<3> &q : face.x)
+            d = std::max(d, p.distance(q));
+        return d;
+      }
+
+      /**
+       * Whether the slave face s and the master face m lie on each other's
+       * front side, each up to `tolerance`, at the points `overlap` of the
+       * plane (the corners of the clipped polygon): at each, with x_s and
+       * x_m the points of the two faces that project onto it (xs and xm
+       * the faces' vertices projected), n_s . (x_m - x_s) and
+       * n_m . (x_s - x_m) at least -tolerance. Faces without normals (zero)
+       * are taken as facing.
+       */
+      bool
+      in_front(const Face                  &s,
+               const Face                  &m,
+               const std::vector<Point<2>> &xs,
+               const std::vector<Point<2>> &xm,
+               const std::vector<Point<2>> &overlap,
+               const double                 tolerance)
+      {
+        if (!(s.normal.norm() > 0. && m.normal.norm() > 0.))
+          return true;
+        for (const Point<2> &q : overlap)
+          {
+            const auto [xi, eta]     = parametric(xs, q);
+            const auto [zeta, theta] = parametric(xm, q);
+            const Tensor<1, 3> d = map(m.x, zeta, theta) - map(s.x, xi, eta);
+            if (s.normal * d < -tolerance || m.normal * d > tolerance)
+              return false;
+          }
+        return true;
+      }
+
+      /**
        * A face's area: of a triangle, or of a flat quadrilateral, whose
        * surface element is affine in (xi, eta) and so its mean is the value
        * at the centre (for a curved one, that value's approximation).
@@ -586,10 +629,14 @@ namespace dualcontact
                                  "(k + 1)^2 node numbers."));
           master_boxes.emplace_back(m.x);
         }
-      const MasterGrid  grid(master_boxes);
-      std::vector<bool> master_affine(master.size());
+      const MasterGrid    grid(master_boxes);
+      std::vector<bool>   master_affine(master.size());
+      std::vector<double> master_diameter(master.size());
       for (unsigned int g = 0; g < master.size(); ++g)
-        master_affine[g] = affine(master[g]);
+        {
+          master_affine[g]   = affine(master[g]);
+          master_diameter[g] = diameter(master[g]);
+        }
       // the slave face that last looked at each master face, so that a
       // master listed in several cells is taken once
       std::vector<unsigned int> seen(master.size(),
@@ -631,15 +678,12 @@ namespace dualcontact
 
           // the slave box, enlarged by a quarter of the face's diameter,
           // and by the reach along its normal
-          Box    box(s.x);
-          double diameter = 0.;
-          for (const Point<3> &p : s.x)
-            for (const Point<3> &q : s.x)
-              diameter = std::max(diameter, p.distance(q));
+          Box          box(s.x);
+          const double slave_diameter = diameter(s);
           for (unsigned int d = 0; d < 3; ++d)
             {
-              box.lo[d] -= 0.25 * diameter + reach * std::abs(n0[d]);
-              box.hi[d] += 0.25 * diameter + reach * std::abs(n0[d]);
+              box.lo[d] -= 0.25 * slave_diameter + reach * std::abs(n0[d]);
+              box.hi[d] += 0.25 * slave_diameter + reach * std::abs(n0[d]);
             }
 
           grid.for_cells(box, [&](const unsigned int cell) {
@@ -669,6 +713,18 @@ namespace dualcontact
                   clip_polygon(slave_polygon, master_polygon);
                 if (overlap.size() < 3 ||
                     0.5 * twice_signed_area(overlap) <= 1e-14 * slave_area)
+                  continue;
+                // the two faces face each other where they overlap: at each
+                // corner of the clipped polygon (between them the distance
+                // of two flat faces is affine) each lies in front of the
+                // other up to facing_tolerance()
+                if (!in_front(s,
+                              m,
+                              xs,
+                              xm,
+                              overlap,
+                              facing_tolerance(slave_diameter,
+                                               master_diameter[g])))
                   continue;
 
                 // the triangles from the vertex centroid, each integrated

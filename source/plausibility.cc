@@ -3,6 +3,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <dualcontact/discretization.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/plausibility.h>
 
@@ -143,7 +144,7 @@ namespace dualcontact
             if (cell->face(f)->at_boundary() &&
                 on_contact(cell->face(f)->boundary_id()))
               for (unsigned int q = 0; q < scalar.n_dofs_per_cell(); ++q)
-                if (scalar.has_support_on_face(q, f))
+                if (support_on_face(scalar, q, f))
                   contact_points.push_back(
                     dofs[fe.component_to_system_index(0, q)]);
         }
@@ -175,7 +176,7 @@ namespace dualcontact
               const types::boundary_id id = cell->face(f)->boundary_id();
               for (unsigned int q = 0; q < scalar.n_dofs_per_cell(); ++q)
                 {
-                  if (!scalar.has_support_on_face(q, f))
+                  if (!support_on_face(scalar, q, f))
                     continue;
                   const Point<dim> &x = at_support_points.quadrature_point(q);
                   if (is_contact_point(

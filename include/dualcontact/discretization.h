@@ -92,6 +92,23 @@ namespace dualcontact
   Quadrature<dim - 1>
   face_quadrature(const FiniteElement<dim> &fe, unsigned int n);
 
+  /**
+   * Whether the shape function `i` of `fe` (FE_Q(k) or FE_SimplexP(k), or
+   * an FESystem of copies of one) is nonzero on the face `face` of the
+   * reference cell, that is, whether its support point lies on the face.
+   * On quadrilaterals and hexahedra FE_Q's has_support_on_face() says so.
+   * FE_SimplexP in deal.II 9.4 takes FiniteElement's default, true for
+   * every function on every face, which would count the vertex opposite a
+   * face among the face's nodes (with a weight int phi = 0 up to
+   * round-off); there the support point is tested against the face's
+   * plane in the reference cell.
+   */
+  template <int dim>
+  bool
+  support_on_face(const FiniteElement<dim> &fe,
+                  unsigned int              i,
+                  unsigned int              face);
+
   /** The kind of the cells of a triangulation (simplex if any is one). */
   template <int dim>
   CellKind

@@ -40,9 +40,10 @@ namespace dualcontact
       std::array<Point<2>, 2>     x;
       std::array<unsigned int, 2> node;
       // the outward unit normal of its body, or zero: two segments couple
-      // only if they face each other (n_slave . n_master < -1/2), so that a
-      // curved master's far side, which projects onto the slave's line as
-      // well, stays out
+      // only if they face each other (n_slave . n_master < -1/2, and each
+      // in front of the other, facing_tolerance()), so that a curved
+      // master's far side, which projects onto the slave's line as well,
+      // stays out
       Tensor<1, 2> normal;
       // at degree k > 1 the k - 1 nodes between the end points: their
       // numbers and their coordinates xi in (0, 1) along x[0] -> x[1]; the
@@ -72,6 +73,27 @@ namespace dualcontact
     };
 
     /**
+     * How far a master face may lie behind a slave face, or the slave face
+     * behind the master face, along the one's outward normal where their
+     * projections overlap, for the two to couple: the larger of the two
+     * faces' sizes h (their lengths in 2D, their diameters in 3D).
+     * - Two curved surfaces that touch overlap between their chords by the
+     *   sagittas h^2 / (8 R) of both faces, at most a quarter of each face
+     *   (a chord is at most 2 R), and a little more across faces tilted
+     *   against each other: h keeps every pair of faces near where they
+     *   touch, on the coarsest meshes too.
+     * - Bodies that overlap at the start by a fraction of an element stay
+     *   coupled, so that their gaps show it, and the check of a pair
+     *   (contact_pairs.cc, overlaps beyond a tenth of the node spacing)
+     *   reports it.
+     * - The far side of the other body, which faces the slave as well and
+     *   projects onto it, lies the body's thickness behind the slave: more
+     *   than one of its faces, and it stays out.
+     */
+    double
+    facing_tolerance(double slave_size, double master_size);
+
+    /**
      * m_s and M_sj for the slave segments against the master segments.
      * Each master segment is projected onto the line of each slave segment
      * along the slave segment's normal; where the projections overlap,
@@ -80,10 +102,11 @@ namespace dualcontact
      * where every int phi_t > 0 (the Gauss-Lobatto nodes of FE_Q(k),
      * k = 1-3). A master segment that
      * projects onto a point (it stands at a right angle to the slave), or
-     * that does not face the slave segment (normals given and
-     * n_slave . n_master >= -1/2), adds nothing. The search is over all pairs
-     * (for the surfaces of a test or of a 2D interface; a bounding-box tree
-     * replaces it for large ones).
+     * that does not face the slave segment (normals given, and
+     * n_slave . n_master >= -1/2, or at an end of the overlap one segment
+     * behind the other by more than facing_tolerance()), adds nothing. The
+     * search is over all pairs (for the surfaces of a test or of a 2D
+     * interface; a bounding-box tree replaces it for large ones).
      */
     Coupling
     couple(const std::vector<Segment> &slave,
@@ -95,10 +118,12 @@ namespace dualcontact
      * takes the gap to the master point its normal (the mean of its
      * segments' normals) meets, so that its entries are m_s phi_j(eta_s),
      * the master's functions at that point (sum_j = m_s where a facing
-     * master segment is met, no entries where none is). It transmits a
-     * uniform pressure as the nodal forces m_s p phi_j(eta_s), which are
-     * not int p phi_j on non-matching meshes: it fails the contact patch
-     * test that the dual mortar passes (doc/two_bodies.md).
+     * master segment is met, as couple() takes them: the nearest one with
+     * n_s . n_master < -1/2 and the node and the point met in front of each
+     * other up to facing_tolerance(); no entries where none is). It
+     * transmits a uniform pressure as the nodal forces m_s p phi_j(eta_s),
+     * which are not int p phi_j on non-matching meshes: it fails the
+     * contact patch test that the dual mortar passes (doc/two_bodies.md).
      */
     Coupling
     couple_node_to_segment(const std::vector<Segment> &slave,

@@ -77,9 +77,9 @@ namespace dualcontact
       // the trace's degree k: 1 on a triangle, 1-3 on a quadrilateral
       unsigned int degree = 1;
       // the outward unit normal of its body, or zero: two faces couple only
-      // if they face each other (n_slave . n_master < -1/2), so that a
-      // curved master's far side, which projects onto the slave's plane as
-      // well, stays out
+      // if they face each other (n_slave . n_master < -1/2, and each in
+      // front of the other, facing_tolerance()), so that a curved master's
+      // far side, which projects onto the slave's plane as well, stays out
       Tensor<1, 3> normal;
     };
 
@@ -100,11 +100,13 @@ namespace dualcontact
      * n_slave . n_master >= -1/2, if the boxes around the faces are apart
      * (the slave's enlarged by a quarter of its diameter, so that faces a
      * little apart still meet, and by `reach` along its normal, so that the
-     * master faces within that distance in front of it or behind it are
-     * seen: two curved bodies part as r^2 / (2 R*) away from where they
-     * touch), if the master projects onto a sliver of the
-     * plane (it stands at a right angle to the slave), or if the clipped
-     * polygon's area is at most 1e-14 times the slave face's. The master
+     * master faces that far in front of it are seen: two curved bodies
+     * part as r^2 / (2 R*) away from where they touch), if the master
+     * projects onto a sliver of the plane (it stands at a right angle to
+     * the slave), if the clipped polygon's area is at most 1e-14 times the
+     * slave face's, or if the normals are given and at a corner of the
+     * clipped polygon one face lies behind the other by more than
+     * facing_tolerance() of their diameters (mortar.h). The master
      * faces are sorted into the cells of a uniform grid by their boxes, so
      * that each slave face looks only at the masters near it.
      */

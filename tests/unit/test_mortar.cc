@@ -3,13 +3,14 @@
 // node the master covers sees the master's functions sum to its weight,
 // reproduces linear fields, and a uniform multiplier on the slave gives the
 // master exactly the nodal forces of a uniform pressure: the contact patch
-// test at the interface.
+// test at the interface. Only segments that face each other couple.
 
 #include <dualcontact/mortar.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 using namespace dualcontact;
@@ -103,6 +104,56 @@ TEST_CASE("Dual mortar on non-matching segments, 7 over 10: the patch "
         {
           INFO("master node " << j);
           CHECK(force[j] == Approx(m_master[j]).epsilon(1e-13));
+        }
+    }
+}
+
+TEST_CASE("Dual mortar and node to segment couple only segments that face "
+          "each other: a master behind the slave, or facing away, adds "
+          "nothing",
+          "[functions][mortar]")
+{
+  // the slave: 2 segments on [0, 1] at y = 0, the upper side of a body
+  // below (outward normal +y); each master: 3 segments on [0, 1] at height
+  // y, the lower side of a body above (outward normal -y) or, facing away,
+  // the upper side of one (+y)
+  const auto with_normal = [](std::vector<mortar::Segment> segments,
+                              const double                 normal_y) {
+    for (mortar::Segment &s : segments)
+      s.normal[1] = normal_y;
+    return segments;
+  };
+  const auto slave = with_normal(line(0., 1., 0., 2), 1.);
+  // (height, normal, whether it couples)
+  const std::vector<std::tuple<double, double, bool>> cases = {
+    // a gap of 0.01 in front of the slave
+    {0.01, -1., true},
+    // an overlap of 0.2, less than the segments' length 0.5: the bodies
+    // overlap at the start, and the check of the pair must see it
+    {-0.2, -1., true},
+    // the far side of a body above, 3 behind the slave: it projects onto
+    // the slave's line and faces it, but lies behind it
+    {-3., -1., false},
+    // in front, but the master's outward normal looks the slave's way
+    {0.01, 1., false}};
+  for (const auto &[y, normal_y, couples] : cases)
+    {
+      const auto master = with_normal(line(0., 1., y, 3), normal_y);
+      INFO("master at y = " << y << " with the normal (0, " << normal_y << ")");
+      for (const bool node_to_segment : {false, true})
+        {
+          INFO((node_to_segment ? "node to segment" : "dual mortar"));
+          const auto c = node_to_segment ?
+                           mortar::couple_node_to_segment(slave, 3, master) :
+                           mortar::couple(slave, 3, master);
+          for (unsigned int s = 0; s < 3; ++s)
+            {
+              INFO("slave node " << s << ", coverage " << c.coverage(s));
+              if (couples)
+                CHECK(c.coverage(s) == Approx(1.).epsilon(1e-13));
+              else
+                CHECK(c.master[s].empty());
+            }
         }
     }
 }

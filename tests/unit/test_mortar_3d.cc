@@ -6,8 +6,9 @@
 // the slave gives the master exactly the nodal forces of a uniform pressure
 // (the contact patch test at the interface); a slave node beyond the master
 // sees the covered part of its dual function; the dual basis of a
-// quadrilateral that is not a parallelogram is still biorthogonal; and
-// between a ball and a spherical socket the coverage is near one.
+// quadrilateral that is not a parallelogram is still biorthogonal;
+// between a ball and a spherical socket the coverage is near one; and only
+// faces that face each other couple.
 
 #include <deal.II/base/quadrature_lib.h>
 
@@ -686,4 +687,45 @@ TEST_CASE("Dual mortar in 3D at degrees 2 and 3 (FE_Q(k) on the faces), "
       INFO("patch " << patch);
       CHECK(patch <= 1e-12);
     }
+}
+
+TEST_CASE("Dual mortar in 3D couples only faces that face each other: a "
+          "master behind the slave, or facing away, adds nothing",
+          "[functions][mortar]")
+{
+  // the slave: 2 x 2 quadrilaterals of [0, 1]^2 at z = 0, the top of a
+  // body below (outward normal +z); each master: 3 x 3 of them (or the
+  // squares cut into triangles) at height z, the bottom of a body above
+  // (-z) or, facing away, the top of one (+z). The reach 5 lets the slave
+  // see every master along its normal: only the faces' facing decides.
+  const Surface slave = grid(0., 1., 0., 2, 1.);
+  // (height, normal, whether it couples)
+  const std::vector<std::tuple<double, double, bool>> cases = {
+    // a gap of 0.01 in front of the slave
+    {0.01, -1., true},
+    // an overlap of 0.2, less than the faces' size: the bodies overlap at
+    // the start, and the check of the pair must see it
+    {-0.2, -1., true},
+    // the far side of a body above, 3 behind the slave: it projects onto
+    // the slave's plane and faces it, but lies behind it
+    {-3., -1., false},
+    // in front, but the master's outward normal looks the slave's way
+    {0.01, 1., false}};
+  for (const unsigned int split : {0u, 1u})
+    for (const auto &[z, normal_z, couples] : cases)
+      {
+        const Surface master = grid(0., 1., z, 3, normal_z, split);
+        INFO("master at z = " << z << " with the normal (0, 0, " << normal_z
+                              << "), "
+                              << (split ? "triangles" : "quadrilaterals"));
+        const auto c = mortar::couple(slave.faces, 9, master.faces, 5.);
+        for (unsigned int s = 0; s < 9; ++s)
+          {
+            INFO("slave node " << s << ", coverage " << c.coverage(s));
+            if (couples)
+              CHECK(c.coverage(s) == Approx(1.).epsilon(1e-12));
+            else
+              CHECK(c.master[s].empty());
+          }
+      }
 }

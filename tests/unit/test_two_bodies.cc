@@ -19,8 +19,11 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scene_run.h"
 #include "test_tools.h"
@@ -424,11 +427,12 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
     {"5: 9", "has no boundary id 9"},
     {"5: 5", "one id with itself"},
     {"5: 2", "gives id 2 the condition 'fixed'"},
-    // the upper block's top against the lower block's bottom, 2 below it
+    // the upper block's top against the lower block's bottom, 2 behind it
+    // (their normals opposite, the two bodies between them): no face of
+    // the one lies in front of a face of the other
     {"3: 2\n  set Conditions = 0: traction, 1: traction\n"
      "  set Tractions = 0: 0.3/0.7; 0, 1: -0.3/0.7; 0",
-     "starts with the bodies overlapping: slave nodes lie up to 2.00e+00 "
-     "[length] inside the master body (at (0.00e+00, 2.00e+00))"},
+     "has no slave node that faces the master surface"},
     // the upper block's bottom and the lower block's bottom look the same
     // way: no slave node faces the master
     {"5: 2\n  set Conditions = 0: traction, 1: traction, 3: traction",
@@ -445,9 +449,7 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
       CHECK(error.code == exit_inconsistent);
       CHECK(contains(error.message, words));
     }
-  // in 3D: degree 1 on tetrahedra and the dual mortar only; the 3D overlap
-  // is measured
-  // against the square root of the slave weight
+  // in 3D: degree 1 on tetrahedra and the dual mortar only
   const std::vector<std::pair<std::string, std::string>> cases_3d = {
     {"subsection Discretization\n  set Polynomial degree = 2\nend\n"
      "subsection Geometry\n  set Cell type = simplex\nend\n",
@@ -455,12 +457,12 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
     {"subsection Boundary conditions\n  set Pair coupling = node to "
      "segment\nend\n",
      "node to segment is a comparison in 2D"},
-    // the upper block's top against the lower block's bottom, 2 below it
+    // the upper block's top against the lower block's bottom, 2 behind it
     {"subsection Boundary conditions\n  set Contact pairs = 5: 4\n"
      "  set Conditions = 0: traction, 1: traction, 2: traction, 3: "
      "traction\n  set Tractions = 0: 0.3/0.7; 0; 0, 1: -0.3/0.7; 0; 0, "
      "2: 0; 0.3/0.7; 0, 3: 0; -0.3/0.7; 0\nend\n",
-     "starts with the bodies overlapping: slave nodes lie up to 2.00e+00"}};
+     "has no slave node that faces the master surface"}};
   for (const auto &[overrides, words] : cases_3d)
     {
       const CaughtError error = catch_input_error(
@@ -470,6 +472,280 @@ TEST_CASE("A contact pair that cannot be one is refused before the solve, "
       CHECK(error.code == exit_inconsistent);
       CHECK(contains(error.message, words));
     }
+}
+
+namespace
+{
+  /**
+   * Two blocks of quadrilaterals (hexahedra) that overlap, written as a
+   * Gmsh file (format 2.2): the lower block [0, 2]^(dim - 1) x [0, 1] in
+   * 2^(dim - 1) cells, the upper one [0, 2]^(dim - 1) x [1 - depth,
+   * 2 - depth] in 3^(dim - 1), one cell high each, so that the upper
+   * block's bottom lies `depth` inside the lower one. Material ids 0 and 1;
+   * boundary ids as the built-in 'two blocks' has them: 0 to 2 dim - 1 on
+   * the outside (x = 0, x = 2, then y, then z in 3D), 2 dim on the lower
+   * block's top, 2 dim + 1 on the upper block's bottom.
+   */
+  template <int dim>
+  void
+  write_overlapping_blocks_msh(const std::string &file, const double depth)
+  {
+    std::ostringstream nodes, elements;
+    unsigned int       n_nodes = 0, n_elements = 0;
+    const auto         element = [&](const unsigned int               type,
+                             const unsigned int               tag,
+                             const std::vector<unsigned int> &vertices) {
+      elements << ++n_elements << ' ' << type << " 2 " << tag << ' ' << tag + 1;
+      for (const unsigned int v : vertices)
+        elements << ' ' << v;
+      elements << '\n';
+    };
+    for (const unsigned int block : {0u, 1u})
+      {
+        const unsigned int n      = 2 + block; // cells across
+        const double       bottom = block == 0 ? 0. : 1. - depth;
+        const unsigned int first  = n_nodes + 1;
+        const unsigned int m      = dim == 3 ? n + 1 : 1;
+        // the number of the lattice point (i, j, v), v = 0 at the bottom
+        const auto at = [&](const unsigned int i,
+                            const unsigned int j,
+                            const unsigned int v) {
+          return first + (v * m + j) * (n + 1) + i;
+        };
+        for (unsigned int v = 0; v < 2; ++v)
+          for (unsigned int j = 0; j < m; ++j)
+            for (unsigned int i = 0; i <= n; ++i)
+              {
+                nodes << ++n_nodes << ' ' << std::setprecision(17) << 2. * i / n
+                      << ' ' << (dim == 3 ? 2. * j / n : bottom + v) << ' '
+                      << (dim == 3 ? bottom + v : 0.) << '\n';
+              }
+        const unsigned int lower_id = block == 0 ? 2 * dim - 2 : 2 * dim + 1;
+        const unsigned int upper_id = block == 0 ? 2 * dim : 2 * dim - 1;
+        if (dim == 2)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                element(
+                  3,
+                  block,
+                  {at(i, 0, 0), at(i + 1, 0, 0), at(i + 1, 0, 1), at(i, 0, 1)});
+                element(1, lower_id, {at(i, 0, 0), at(i + 1, 0, 0)});
+                element(1, upper_id, {at(i, 0, 1), at(i + 1, 0, 1)});
+              }
+            element(1, 0, {at(0, 0, 0), at(0, 0, 1)});
+            element(1, 1, {at(n, 0, 0), at(n, 0, 1)});
+          }
+        else
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                element(5,
+                        block,
+                        {at(i, j, 0),
+                         at(i + 1, j, 0),
+                         at(i + 1, j + 1, 0),
+                         at(i, j + 1, 0),
+                         at(i, j, 1),
+                         at(i + 1, j, 1),
+                         at(i + 1, j + 1, 1),
+                         at(i, j + 1, 1)});
+                for (const unsigned int v : {0u, 1u})
+                  element(3,
+                          v == 0 ? lower_id : upper_id,
+                          {at(i, j, v),
+                           at(i + 1, j, v),
+                           at(i + 1, j + 1, v),
+                           at(i, j + 1, v)});
+                // the sides x = 0, x = 2 (along j) and y = 0, y = 2 (along
+                // i)
+                if (i == 0)
+                  element(3,
+                          0,
+                          {at(0, j, 0),
+                           at(0, j + 1, 0),
+                           at(0, j + 1, 1),
+                           at(0, j, 1)});
+                if (i + 1 == n)
+                  element(3,
+                          1,
+                          {at(n, j, 0),
+                           at(n, j + 1, 0),
+                           at(n, j + 1, 1),
+                           at(n, j, 1)});
+                if (j == 0)
+                  element(3,
+                          2,
+                          {at(i, 0, 0),
+                           at(i + 1, 0, 0),
+                           at(i + 1, 0, 1),
+                           at(i, 0, 1)});
+                if (j + 1 == n)
+                  element(3,
+                          3,
+                          {at(i, n, 0),
+                           at(i + 1, n, 0),
+                           at(i + 1, n, 1),
+                           at(i, n, 1)});
+              }
+      }
+    std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+                        << n_nodes << '\n'
+                        << nodes.str() << "$EndNodes\n$Elements\n"
+                        << n_elements << '\n'
+                        << elements.str() << "$EndElements\n";
+  }
+} // namespace
+
+TEST_CASE("Two bodies that overlap at the start by a fraction of an element "
+          "are refused, in 2D and 3D, with the overlap measured",
+          "[pairs][errors]")
+{
+  // prm/two_blocks_patch.prm and prm/two_blocks_patch_3d.prm on two blocks
+  // one cell high whose contact faces (2/3 of the upper block's, 1 of the
+  // lower block's wide) overlap by 0.1: the faces stay paired (the overlap
+  // is within mortar::facing_tolerance()), and every slave node lies 0.1
+  // inside the master body, more than a tenth of its spacing (m_s in 2D,
+  // its square root in 3D, at most 2/3)
+  const std::string directory =
+    temporary_directory("overlapping_blocks", MPI_COMM_WORLD);
+  const std::string file_2d = directory + "/overlapping_2d.msh";
+  const std::string file_3d = directory + "/overlapping_3d.msh";
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      std::filesystem::create_directories(directory);
+      write_overlapping_blocks_msh<2>(file_2d, 0.1);
+      write_overlapping_blocks_msh<3>(file_3d, 0.1);
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  const auto mesh = [](const std::string &file) {
+    return "subsection Geometry\n  set Type = mesh file\n  set Mesh file = " +
+           file + "\nend\n";
+  };
+  const std::string words =
+    "starts with the bodies overlapping: slave nodes lie up to 1.00e-01 "
+    "[length] inside the master body";
+  const CaughtError error_2d = catch_input_error(
+    [&] { const Run run("two_blocks_patch.prm", mesh(file_2d)); });
+  INFO("2D: " << error_2d.message);
+  CHECK(error_2d.thrown);
+  CHECK(error_2d.code == exit_inconsistent);
+  CHECK(contains(error_2d.message, words));
+  const CaughtError error_3d = catch_input_error(
+    [&] { const SceneRun<3> run("two_blocks_patch_3d.prm", mesh(file_3d)); });
+  INFO("3D: " << error_3d.message);
+  CHECK(error_3d.thrown);
+  CHECK(error_3d.code == exit_inconsistent);
+  CHECK(contains(error_3d.message, words));
+  remove_directory(directory, MPI_COMM_WORLD);
+}
+
+namespace
+{
+  /**
+   * The largest difference of a pair's slave gap g0_s from the exact one,
+   * over all ranks' contact nodes of the last mesh, relative to the
+   * element there, and the number of nodes compared: two half discs
+   * (balls) touching at the origin, the lower one of radius `lower` the
+   * slave, the upper one of radius `upper` the master. The exact gap is the
+   * distance from the slave node along its contact direction n_s to the
+   * upper circle (sphere), where the line meets its lower half; a node
+   * whose line misses it is not compared. The element at a node is the
+   * distance to its nearest other contact node times the degree (the
+   * nodes of a face of degree k are h / k apart).
+   */
+  template <int dim>
+  std::pair<double, unsigned int>
+  gap_deviation(const SceneRun<dim> &run,
+                const double         upper,
+                const unsigned int   degree)
+  {
+    const ContactSet<dim>  &contact = run.problem->contact();
+    std::vector<Point<dim>> local;
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      local.push_back(contact.nodes[s].position);
+    std::vector<Point<dim>> all;
+    for (const auto &part : Utilities::MPI::all_gather(run.comm, local))
+      all.insert(all.end(), part.begin(), part.end());
+    Point<dim> centre;
+    centre[dim - 1]       = upper;
+    double       worst    = 0.;
+    unsigned int compared = 0;
+    for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+      {
+        const ContactNode<dim> &node = contact.nodes[s];
+        // |x + t n - c|^2 = R^2: t^2 + 2 b t + q = 0
+        const Tensor<1, dim> d = node.position - centre;
+        const double         b = node.normal * d;
+        const double         q = d.norm_square() - upper * upper;
+        if (b * b - q < 0.)
+          continue;
+        const double t = -b - std::sqrt(b * b - q);
+        if ((node.position + t * node.normal)[dim - 1] > upper)
+          continue;
+        double nearest = std::numeric_limits<double>::max();
+        for (const Point<dim> &x : all)
+          if (x.distance(node.position) > 1e-12)
+            nearest = std::min(nearest, x.distance(node.position));
+        worst = std::max(worst, std::abs(node.gap0 - t) / (degree * nearest));
+        ++compared;
+      }
+    return {Utilities::MPI::max(worst, run.comm),
+            Utilities::MPI::sum(compared, run.comm)};
+  }
+} // namespace
+
+TEST_CASE("Two coarse discs and two coarse balls, the lower one the slave, "
+          "are accepted, and every slave node's gap is the exact one to a "
+          "fraction of an element",
+          "[pairs]")
+{
+  // prm/two_cylinders.prm with R1 = 3 (upper, the master) and R2 = 2.8
+  // (lower, the slave) at degree 2, on the coarse mesh refined once and
+  // then halved (no pre-refinement), and prm/two_spheres.prm with the
+  // lower ball the slave on the coarse mesh refined once and graded once.
+  // The nodes beyond where the master faces face the slave see a part of
+  // the master only; at some the point sum_j c_sj x_j lies far beyond the
+  // master nodes (a gap of -7, more than the radii), and they face no
+  // master (contact_pairs.cc). The gaps are exact to round-off where the
+  // bodies touch; the largest differences, 0.38 of an element in 2D and
+  // 0.27 in 3D, are at the partly covered nodes farthest from it, where
+  // the master point of the dual basis lies beside the line along n_s on
+  // a master surface inclined to it (gaps of 0.6 and 0.15).
+  const std::string pair_2_0 =
+    "subsection Boundary conditions\n  set Contact pairs = 2: 0\nend\n";
+  {
+    const Run run("two_cylinders.prm",
+                  pair_2_0 +
+                    "subsection Geometry\n  set Radius = 3\n"
+                    "  set Lower radius = 2.8\n"
+                    "  set Pre-refinement steps = 0\nend\n"
+                    "subsection Discretization\n"
+                    "  set Polynomial degree = 2\nend\n"
+                    "subsection Refinement\n  set Initial global refinement "
+                    "= 1\n  set Number of cycles = 2\nend\n");
+    const auto [worst, compared] = gap_deviation(run, 3., 2);
+    INFO("2D: " << compared << " of " << run.last().solve.n_contact_nodes
+                << " contact nodes compared, the largest gap error " << worst
+                << " of an element");
+    CHECK(compared >= run.last().solve.n_contact_nodes / 2);
+    CHECK(worst <= 0.5);
+  }
+  {
+    const SceneRun<3> run("two_spheres.prm",
+                          pair_2_0 +
+                            "subsection Geometry\n"
+                            "  set Pre-refinement steps = 1\nend\n"
+                            "subsection Refinement\n  set Initial global "
+                            "refinement = 1\n  set Number of cycles = "
+                            "1\nend\n");
+    const auto [worst, compared] = gap_deviation(run, 1., 1);
+    INFO("3D: " << compared << " of " << run.last().solve.n_contact_nodes
+                << " contact nodes compared, the largest gap error " << worst
+                << " of an element");
+    CHECK(compared >= run.last().solve.n_contact_nodes / 2);
+    CHECK(worst <= 0.5);
+  }
 }
 
 TEST_CASE("A body that only its contact pair could hold, not pressed onto "
@@ -696,6 +972,94 @@ TEST_CASE("Two bodies read from a Gmsh file, their nodes where they touch "
             Approx(a.zone.pressure_error).epsilon(1e-5));
     }
   remove_directory(directory, MPI_COMM_WORLD);
+}
+
+TEST_CASE("Two blocks of triangles read from a Gmsh file pass the contact "
+          "patch test with either block the slave (pairs 4: 5 and 5: 4)",
+          "[pairs][mesh][simplex]")
+{
+  // tests/prm/two_blocks_triangles.msh: prm/two_blocks_patch.prm's box in
+  // 5 x 2 squares under 3 x 2, each cut into two triangles. A contact face
+  // of a triangle holds two of its three vertices; the third, opposite the
+  // face, is no node of it (support_on_face() in discretization.h, where
+  // FE_SimplexP's has_support_on_face() counts every function): with the
+  // lower block's top the slave, such a vertex of its top row of triangles
+  // (weight 0 up to round-off) is no slave node either.
+  std::vector<double> forces;
+  for (const std::string pair : {"4: 5", "5: 4"})
+    {
+      INFO("the contact pair " << pair);
+      const Run    run("two_blocks_patch.prm",
+                    tight +
+                      "subsection Geometry\n  set Type = mesh file\n"
+                         "  set Mesh file = " +
+                      test_file("prm/two_blocks_triangles.msh") +
+                      "\nend\nsubsection Boundary conditions\n"
+                         "  set Contact pairs = " +
+                      pair + "\nend\n");
+      Tensor<1, 2> q;
+      const auto [l1, l2] = deviation(run, 1., q);
+      for (const CycleResult &r : run.problem->results())
+        {
+          INFO("cycle " << r.mesh.cycle << ": error "
+                        << r.errors.error_L2 / r.errors.norm_L2);
+          // the slave's nodes: the lower block's 5 (10) faces or the upper
+          // block's 3 (6), all facing the master
+          CHECK(r.solve.n_contact_nodes ==
+                (pair == "4: 5" ? 5 : 3) * (1u << r.mesh.cycle) + 1);
+          CHECK(r.solve.n_uncovered == 0);
+          CHECK(r.errors.error_L2 <= 1e-8 * r.errors.norm_L2);
+          CHECK(r.zone.contact_force == Approx(2.).epsilon(1e-10));
+          for (unsigned int c = 0; c < 2; ++c)
+            CHECK(std::abs(r.zone.on_slave_body[c] +
+                           r.zone.on_master_body[c]) <= 1e-10 * 2.);
+        }
+      INFO("largest |l1 - p| " << l1);
+      CHECK(l1 <= 1e-8);
+      forces.push_back(run.last().zone.contact_force);
+    }
+  REQUIRE(forces.size() == 2);
+  CHECK(forces[0] == Approx(forces[1]).epsilon(1e-10));
+}
+
+TEST_CASE("A pair whose surface ends at a coarse edge of a boundary split "
+          "into ids, refined on one side of the edge at degree 2: its nodes "
+          "that hang on a node off the surface, on the slave or on the "
+          "master, are coupled",
+          "[pairs][mesh]")
+{
+  // tests/prm/block_on_split_top.msh: a block on the middle of a row of
+  // three hexahedra whose top has id 6 in the middle and 8 at the ends.
+  // Refined toward the pair, the middle hexahedron and the one on the
+  // right are split, the one on the left is not: on the edge x = 1 of the
+  // middle top the nodes of degree 2 hang on the DoF inside the coarse
+  // edge, which lies on the left top (id 8) alone. The load on the upper
+  // block's top, 1 on 0.8 x 0.6, crosses the interface whole.
+  const std::string scene =
+    "subsection Geometry\n  set Dimension = 3\n  set Type = mesh file\n"
+    "  set Mesh file = " +
+    test_file("prm/block_on_split_top.msh") +
+    "\n  set Pre-refinement steps = 1\n"
+    "  set Pre-refinement distance = 0.5\nend\n"
+    "subsection Discretization\n  set Polynomial degree = 2\nend\n"
+    "subsection Refinement\n  set Number of cycles = 1\nend\n"
+    "subsection Boundary conditions\n  set Conditions = 4: fixed, 5: "
+    "traction\n  set Tractions = 5: 0; 0; -1\n  set Contact pairs = ";
+  for (const std::string pair : {"7: 6", "6: 7"})
+    {
+      const SceneRun<3>  run("", scene + pair + "\nend\n");
+      const CycleResult &r = run.last();
+      INFO("the contact pair " << pair << ": " << r.solve.n_contact_nodes
+                               << " contact nodes, "
+                               << r.solve.n_hanging_contact << " hanging");
+      CHECK(r.zone.contact_force == Approx(0.48).epsilon(1e-8));
+      for (unsigned int c = 0; c < 3; ++c)
+        CHECK(std::abs(r.zone.on_slave_body[c] + r.zone.on_master_body[c]) <=
+              1e-10 * 0.48);
+      // with the lower block's top the slave, its hanging nodes at x = 1
+      if (pair == "6: 7")
+        CHECK(r.solve.n_hanging_contact > 0);
+    }
 }
 
 TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz between two identical "
