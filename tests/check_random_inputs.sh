@@ -38,7 +38,7 @@
 #   cd <work dir>/run/<name> && [mpirun -np 2] <dualcontact> ../../inputs/<name>.prm
 # DUALCONTACT_RANDOM_SEED=<n> makes other inputs than the test's, to explore.
 #
-# Run time: 52 inputs, each mostly the program's start (some 0.4 s of
+# Run time: 69 inputs, each mostly the program's start (some 0.4 s of
 # loading deal.II's libraries and starting MPI; mpirun adds 0.5 s, and 2 s
 # more on an error exit); the scenes solve in a small fraction of a second.
 set -uo pipefail

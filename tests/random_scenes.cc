@@ -20,14 +20,36 @@
 //                   it, a tangential load at most 0.3 times what friction
 //                   could hold and whose moment keeps the centre of pressure
 //                   within 0.3 of the half-width of the base (no tipping).
+//                   Then two bodies in contact (a contact pair, the pair
+//                   written either way, doc/two_bodies.md), most on one
+//                   cycle: 'two blocks' (2D and 3D, quadrilaterals or
+//                   simplices, meshes that do not match across the cut, the
+//                   upper block sometimes of another material) with the
+//                   lower block clamped or on the plane and sliders ('normal
+//                   fixed') on one side or both, stacks of two blocks on the
+//                   plane, an upper block that reaches beyond the lower one
+//                   (<Geometry/Upper overhang>), load paths that press and
+//                   unload to zero (the last step without load), Gmsh files
+//                   of two blocks of triangles that the generator writes
+//                   (format 2.2 or 4.1, nodes of their own on each side of
+//                   the cut, the upper block narrower or wider), and Hertz's
+//                   two half discs. The upper body is pressed onto the lower
+//                   one; where its pair alone holds it, its tangential load
+//                   is at most 0.3 of what friction holds (none without
+//                   friction) and 0.3 of the tipping limit. Kinds of scene
+//                   that fail today are not drawn (two_blocks() says which).
 //   mutated_NN.prm  inputs derived from the shipped scenes prm/*.prm (made
 //                   cheap first: one cycle, at most 2 global refinements in
 //                   2D and 1 in 3D, few pre-refinement steps, no vtu) and
 //                   from the valid ones, by one mutation each (the table
 //                   `kinds` below: the kind, what it does, the exit
-//                   statuses it allows).
-//   meshes/         prm/meshes/half_disc.msh and half_disc_v22.msh, and the
-//                   garbled copies the mutations make
+//                   statuses it allows; of the scenes of two bodies also a
+//                   pair id that does not exist, both ids on one body, an id
+//                   in two pairs, and the pair turned round).
+//   meshes/         prm/meshes/half_disc.msh and half_disc_v22.msh, the
+//                   meshes of the shipped scenes, the Gmsh files of two
+//                   blocks (two_blocks_N.msh), and the garbled copies the
+//                   mutations make
 //   manifest.txt    one line per input: name, MPI ranks, the allowed exit
 //                   statuses (comma-separated), a description; tab-separated
 //
@@ -43,6 +65,7 @@
 // those of a failing run).
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -163,6 +186,14 @@ namespace
     // a Tractions value with a tangential load 1.5 times what friction can
     // hold (only friction holds the body along the foundation): exit 7
     std::string overload;
+    // of a scene of two bodies: its <Boundary conditions/Contact pairs>,
+    // and a pair of two ids on one body that are free or loaded (the
+    // second one not in the scene's pair)
+    std::string pair;
+    std::string one_body_pair;
+    // whether the pair holds when turned round (a generated scene whose
+    // pair was drawn either way)
+    bool pair_turns = false;
   };
 
   struct Line
@@ -362,9 +393,11 @@ namespace
   unsigned int law_turn = 0;
 
   double
-  friction(Builder &b, const double pressure)
+  friction(Builder &b, const double pressure, const bool coulomb = true)
   {
-    const unsigned int law = law_turn++ % 3;
+    unsigned int law = law_turn++ % 3;
+    if (law == 1 && !coulomb)
+      law = law_turn++ % 3;
     if (law == 0)
       {
         b.scene.law = "none";
@@ -736,6 +769,639 @@ namespace
     return b.scene;
   }
 
+  // ------------------------------------------------------------ two bodies
+  // Two blocks, one on the other, as 'two blocks' numbers their boundary:
+  // the lower block's bottom and top, the upper block's bottom and top, the
+  // sides with the rectangle's ids on both blocks. The Gmsh blocks below
+  // take the same ids.
+  struct BlockIds
+  {
+    unsigned int lower_bottom, upper_top, lower_top, upper_bottom;
+  };
+
+  BlockIds
+  block_ids(const unsigned int dim)
+  {
+    if (dim == 2)
+      return {2, 3, 4, 5};
+    return {4, 5, 6, 7};
+  }
+
+  // the pair across the cut, written either way: the upper block's bottom
+  // the slave ('5: 4'), or the lower block's top ('4: 5'); the latter only
+  // if not both ways
+  void
+  cut_pair(Builder &b, const BlockIds &ids, const bool both_ways = true)
+  {
+    b.scene.pair_turns            = both_ways;
+    const bool        upper_slave = both_ways && chance(50);
+    const std::string upper       = std::to_string(ids.upper_bottom);
+    const std::string lower       = std::to_string(ids.lower_top);
+    b.scene.pair = upper_slave ? upper + ": " + lower : lower + ": " + upper;
+    b.scene.one_body_pair = upper + ": " + std::to_string(ids.upper_top);
+    b.set("Boundary conditions", "Contact pairs", b.scene.pair);
+  }
+
+  // the upper body's own material (id 1), sometimes: E from half to three
+  // times the lower body's
+  std::string
+  upper_material(Builder &b, const Common &c)
+  {
+    if (!chance(40))
+      return "";
+    const double factor = 0.5 + below(6) * 0.5;
+    const double E      = rounded(c.E * factor, 3);
+    const double nu     = below(9) * 0.05;
+    b.set("Material", "Materials by id", "1: " + text(E) + ", " + text(nu, 2));
+    return ", the upper body E = " + text(E);
+  }
+
+  // The Gmsh file of two blocks of triangles (2D), the lower one
+  // [x0, x0 + w_l] x [y0, y0 + h_l], the upper one [xu, xu + w_u] x
+  // [y0 + h_l, y0 + h_l + h_u] on it with nodes of its own on the cut: each
+  // block nx x ny rectangles, each cut into two triangles along one of its
+  // diagonals (the same in a block), listed counterclockwise from a random
+  // corner, but a triangle's edge on the cut is never its second one (v1,
+  // v2): on the slave side, the pairing of such edges fails once the mesh
+  // is refined (std::out_of_range, "map::at", from ContactSet::couple_pairs:
+  // exit 1 on 1 rank, a hang on 2). The edges of each side are a curve of
+  // their own whose physical group is the side's boundary id (as BlockIds
+  // numbers them, the sides 0 and 1 on both blocks); the triangles of the
+  // lower block are in the physical surface 0, those of the upper block in
+  // 1 (their material ids). Format 2.2, or 4.1 with its $Entities.
+  struct TriangleBlock
+  {
+    double                             x0 = 0, y0 = 0, w = 1, h = 1;
+    unsigned int                       nx = 1, ny = 1;
+    bool                               other_diagonal = false;
+    bool                               cut_at_top     = false;
+    std::array<unsigned int, 4>        ids = {}; // left, right, bottom, top
+    unsigned int                       material   = 0;
+    unsigned int                       first_node = 1;
+    std::vector<std::array<double, 2>> nodes;
+    std::vector<std::array<unsigned int, 3>>                triangles;
+    std::array<std::vector<std::array<unsigned int, 2>>, 4> sides;
+
+    void
+    build()
+    {
+      const auto tag = [this](const unsigned int i, const unsigned int j) {
+        return first_node + j * (nx + 1) + i;
+      };
+      for (unsigned int j = 0; j <= ny; ++j)
+        for (unsigned int i = 0; i <= nx; ++i)
+          nodes.push_back(
+            {{rounded(x0 + w * i / nx, 6), rounded(y0 + h * j / ny, 6)}});
+      for (unsigned int j = 0; j < ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          {
+            const unsigned int a = tag(i, j), b = tag(i + 1, j),
+                               c = tag(i + 1, j + 1), d = tag(i, j + 1);
+            if (other_diagonal)
+              {
+                triangles.push_back({{a, b, d}});
+                triangles.push_back({{b, c, d}});
+              }
+            else
+              {
+                triangles.push_back({{a, b, c}});
+                triangles.push_back({{a, c, d}});
+              }
+          }
+      // each triangle from a random corner; one with an edge on the cut
+      // has it as its first or third edge
+      const unsigned int cut_row = cut_at_top ? ny : 0;
+      for (auto &t : triangles)
+        {
+          unsigned int k = 3; // the edge (t[k], t[k + 1]) on the cut
+          for (unsigned int e = 0; e < 3; ++e)
+            if ((t[e] - first_node) / (nx + 1) == cut_row &&
+                (t[(e + 1) % 3] - first_node) / (nx + 1) == cut_row)
+              k = e;
+          const unsigned int shift =
+            k < 3 ? (chance(50) ? k : (k + 1) % 3) : below(3);
+          const std::array<unsigned int, 3> was = t;
+          for (unsigned int i = 0; i < 3; ++i)
+            t[i] = was[(i + shift) % 3];
+        }
+      for (unsigned int j = 0; j < ny; ++j)
+        {
+          sides[0].push_back({{tag(0, j + 1), tag(0, j)}});
+          sides[1].push_back({{tag(nx, j), tag(nx, j + 1)}});
+        }
+      for (unsigned int i = 0; i < nx; ++i)
+        {
+          sides[2].push_back({{tag(i, 0), tag(i + 1, 0)}});
+          sides[3].push_back({{tag(i + 1, ny), tag(i, ny)}});
+        }
+    }
+  };
+
+  void
+  write_triangle_blocks(const fs::path                   &file,
+                        const std::vector<TriangleBlock> &blocks,
+                        const bool                        format_41)
+  {
+    std::ofstream out(file, std::ios::binary);
+    std::size_t   n_nodes = 0, n_elements = 0;
+    for (const TriangleBlock &block : blocks)
+      {
+        n_nodes += block.nodes.size();
+        n_elements += block.triangles.size();
+        for (const auto &side : block.sides)
+          n_elements += side.size();
+      }
+    const auto point = [](const std::array<double, 2> &x) {
+      return text(x[0], 8) + ' ' + text(x[1], 8) + " 0";
+    };
+    std::size_t element = 0;
+    if (!format_41)
+      {
+        out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+            << n_nodes << '\n';
+        for (const TriangleBlock &block : blocks)
+          for (std::size_t v = 0; v < block.nodes.size(); ++v)
+            out << block.first_node + v << ' ' << point(block.nodes[v]) << '\n';
+        out << "$EndNodes\n$Elements\n" << n_elements << '\n';
+        // the curves are the elementary entities 1 to 8, the surfaces 1, 2
+        for (std::size_t k = 0; k < blocks.size(); ++k)
+          {
+            const TriangleBlock &block = blocks[k];
+            for (unsigned int s = 0; s < 4; ++s)
+              for (const auto &edge : block.sides[s])
+                out << ++element << " 1 2 " << block.ids[s] << ' '
+                    << 4 * k + s + 1 << ' ' << edge[0] << ' ' << edge[1]
+                    << '\n';
+            for (const auto &t : block.triangles)
+              out << ++element << " 2 2 " << block.material << ' ' << k + 1
+                  << ' ' << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+          }
+        out << "$EndElements\n";
+        return;
+      }
+    // 4.1: no points; each side a curve, each block a surface bounded by
+    // its four sides
+    out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 "
+        << 4 * blocks.size() << ' ' << blocks.size() << " 0\n";
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+      {
+        const TriangleBlock &block = blocks[k];
+        const double         x1    = block.nodes.back()[0];
+        const double         y1    = block.nodes.back()[1];
+        const double         x0    = block.nodes.front()[0];
+        const double         y0    = block.nodes.front()[1];
+        // left, right, bottom, top: their boxes
+        const std::array<std::array<double, 4>, 4> boxes = {
+          {{{x0, y0, x0, y1}},
+           {{x1, y0, x1, y1}},
+           {{x0, y0, x1, y0}},
+           {{x0, y1, x1, y1}}}};
+        for (unsigned int s = 0; s < 4; ++s)
+          out << 4 * k + s + 1 << ' ' << text(boxes[s][0], 8) << ' '
+              << text(boxes[s][1], 8) << " 0 " << text(boxes[s][2], 8) << ' '
+              << text(boxes[s][3], 8) << " 0 1 " << block.ids[s] << " 0\n";
+      }
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+      {
+        const TriangleBlock &block = blocks[k];
+        out << k + 1 << ' ' << point(block.nodes.front()) << ' '
+            << point(block.nodes.back()) << " 1 " << block.material << " 4 "
+            << 4 * k + 3 << ' ' << 4 * k + 2 << ' ' << -int(4 * k + 4) << ' '
+            << -int(4 * k + 1) << '\n';
+      }
+    out << "$EndEntities\n$Nodes\n"
+        << blocks.size() << ' ' << n_nodes << " 1 " << n_nodes << '\n';
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+      {
+        const TriangleBlock &block = blocks[k];
+        out << "2 " << k + 1 << " 0 " << block.nodes.size() << '\n';
+        for (std::size_t v = 0; v < block.nodes.size(); ++v)
+          out << block.first_node + v << '\n';
+        for (const auto &x : block.nodes)
+          out << point(x) << '\n';
+      }
+    out << "$EndNodes\n$Elements\n"
+        << 5 * blocks.size() << ' ' << n_elements << " 1 " << n_elements
+        << '\n';
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+      {
+        const TriangleBlock &block = blocks[k];
+        for (unsigned int s = 0; s < 4; ++s)
+          {
+            out << "1 " << 4 * k + s + 1 << " 1 " << block.sides[s].size()
+                << '\n';
+            for (const auto &edge : block.sides[s])
+              out << ++element << ' ' << edge[0] << ' ' << edge[1] << '\n';
+          }
+      }
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+      {
+        const TriangleBlock &block = blocks[k];
+        out << "2 " << k + 1 << " 2 " << block.triangles.size() << '\n';
+        for (const auto &t : block.triangles)
+          out << ++element << ' ' << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+      }
+    out << "$EndElements\n";
+  }
+
+  // Two blocks, the upper one pressed onto the lower one by a traction on
+  // its top (dim - 1 the vertical axis):
+  //   slider     'two blocks', the lower block clamped or on the plane, a
+  //              slider ('normal fixed') on one side or both of each
+  //              tangential axis;
+  //   stack      'two blocks' on the plane (the lower block's bottom
+  //              'contact'), nothing else holds them;
+  //   overhang   'two blocks' whose upper block reaches beyond the lower
+  //              one (<Geometry/Upper overhang>), sometimes sliders;
+  //   unloading  'two blocks', a load path of 2 or 4 steps up to t = 1 and
+  //              back to zero at t = 2;
+  //   mesh file  a Gmsh file of two blocks of triangles (2D) that the
+  //              generator writes, the upper block narrower or wider than
+  //              the lower one, format 2.2 or 4.1.
+  // The pair is written either way; the meshes do not match across the
+  // cut. The upper block's tangential load: up to p/2 where sliders hold
+  // it, else at most 0.3 of what friction holds (none without friction)
+  // and 0.3 of the tipping limit, half the contact's width over the lever
+  // (the upper block's height on a clamped lower block, both blocks' on the
+  // plane). Kinds of scene that fail today (exit 1) are not drawn: a load
+  // path that unloads to zero with Coulomb friction, sliders with friction
+  // (see the loads below), tetrahedra on the plane, and in 3D an upper
+  // block that reaches beyond as the slave.
+  enum class Blocks
+  {
+    slider,
+    stack,
+    overhang,
+    unloading,
+    mesh_file
+  };
+
+  Scene
+  two_blocks(const fs::path &out, const unsigned int dim, const Blocks kind)
+  {
+    Builder b;
+    b.scene.dim            = dim;
+    const bool mesh        = kind == Blocks::mesh_file;
+    b.scene.geometry       = mesh ? "mesh file" : "two blocks";
+    const BlockIds     ids = block_ids(dim);
+    const unsigned int v   = dim - 1; // the vertical axis
+    b.set("Geometry", "Dimension", std::to_string(dim));
+    b.set("Geometry", "Type", b.scene.geometry);
+    const Common      c     = material(b);
+    const std::string upper = upper_material(b, c);
+
+    // the lower block on the plane or clamped, sliders on the sides
+    const bool on_plane =
+      kind == Blocks::stack ||
+      (kind != Blocks::overhang && chance(kind == Blocks::slider ? 50 : 30));
+    const bool sliders =
+      kind == Blocks::slider ||
+      (kind != Blocks::stack && chance(kind == Blocks::unloading ? 30 : 40));
+
+    // the lower block's corner, its widths along the tangential axes and
+    // the blocks' heights; the upper block's widths and the contact's
+    std::vector<double> corner(dim), lower_width(dim - 1), upper_width(dim - 1),
+      contact_width(dim - 1);
+    for (unsigned int d = 0; d < dim; ++d)
+      corner[d] = rounded(uniform(-2, 2), 3);
+    for (unsigned int t = 0; t < dim - 1; ++t)
+      lower_width[t] = rounded(uniform(1, dim == 2 ? 3 : 2), 3);
+    const double height_factor = uniform(0.25, 0.5);
+    const double lower_height  = rounded(height_factor * lower_width[0], 3);
+    double       upper_height  = lower_height;
+    double       cells         = 0; // of the coarse mesh
+    bool         simplex       = false;
+    std::string  shape;
+    if (mesh)
+      {
+        b.scene.obstacle = "";
+        upper_height     = rounded(lower_height * uniform(0.6, 1.6), 3);
+        // the upper block 0.5 to 1.5 times as wide, narrower ones shifted
+        // across the lower block's top, wider ones centred on it
+        upper_width[0]     = rounded(lower_width[0] * uniform(0.5, 1.5), 3);
+        contact_width[0]   = std::min(lower_width[0], upper_width[0]);
+        const double room  = lower_width[0] - upper_width[0];
+        const double shift = room > 0 ? rounded(room * uniform(0, 1), 3) : 0;
+        const double x_upper =
+          rounded(room > 0 ? corner[0] + shift : corner[0] + room / 2, 6);
+        TriangleBlock lower_block;
+        lower_block.x0             = corner[0];
+        lower_block.y0             = corner[1];
+        lower_block.w              = lower_width[0];
+        lower_block.h              = lower_height;
+        lower_block.ids            = {{0, 1, ids.lower_bottom, ids.lower_top}};
+        lower_block.material       = 0;
+        lower_block.nx             = 2 + below(4);
+        lower_block.ny             = 1 + below(2);
+        lower_block.other_diagonal = chance(50);
+        lower_block.cut_at_top     = true;
+        lower_block.build();
+        TriangleBlock upper_block;
+        upper_block.x0             = x_upper;
+        upper_block.y0             = rounded(corner[1] + lower_height, 6);
+        upper_block.w              = upper_width[0];
+        upper_block.h              = upper_height;
+        upper_block.ids            = {{0, 1, ids.upper_bottom, ids.upper_top}};
+        upper_block.material       = 1;
+        const unsigned int nx      = 2 + below(4);
+        upper_block.nx             = nx == lower_block.nx ? nx + 1 : nx;
+        upper_block.ny             = 1 + below(2);
+        upper_block.other_diagonal = chance(50);
+        upper_block.first_node =
+          static_cast<unsigned int>(lower_block.nodes.size()) + 1;
+        upper_block.build();
+        const bool          format_41 = chance(50);
+        static unsigned int serial    = 0;
+        const std::string   name =
+          "meshes/two_blocks_" + std::to_string(serial++) + ".msh";
+        write_triangle_blocks(out / name,
+                              {lower_block, upper_block},
+                              format_41);
+        b.set("Geometry", "Mesh file", name);
+        cells =
+          double(lower_block.triangles.size() + upper_block.triangles.size());
+        simplex = true;
+        shape   = std::string("Gmsh ") + (format_41 ? "4.1" : "2.2") +
+                " two blocks of triangles (" + std::to_string(lower_block.nx) +
+                " x " + std::to_string(lower_block.ny) + " and " +
+                std::to_string(upper_block.nx) + " x " +
+                std::to_string(upper_block.ny) + " rectangles), the upper " +
+                text(upper_width[0]) + " wide on the lower " +
+                text(lower_width[0]);
+      }
+    else
+      {
+        // each block half the box's height, the upper one reaching beyond
+        // the lower one by the overhang on each side
+        double overhang = 0;
+        if (kind == Blocks::overhang)
+          overhang = rounded(lower_width[0] * uniform(0.05, 0.25), 3);
+        std::vector<double> upper_corner = corner;
+        for (unsigned int t = 0; t < dim - 1; ++t)
+          {
+            upper_corner[t]  = rounded(corner[t] + lower_width[t], 6);
+            lower_width[t]   = upper_corner[t] - corner[t];
+            upper_width[t]   = lower_width[t] + 2 * overhang;
+            contact_width[t] = lower_width[t];
+          }
+        upper_corner[v] = rounded(corner[v] + 2 * lower_height, 6);
+        b.set("Geometry", "Lower left corner", vec(corner));
+        b.set("Geometry", "Upper right corner", vec(upper_corner));
+        if (overhang > 0)
+          b.set("Geometry", "Upper overhang", text(overhang));
+        // the lower block 2-5 cells across (3D: 1-3), the upper block 1 or
+        // 2 more or fewer; 1 or 2 cells high
+        std::vector<double> lower_cells(dim), upper_cells(dim);
+        for (unsigned int t = 0; t < dim - 1; ++t)
+          {
+            lower_cells[t] = (dim == 2 ? 2 : 1) + below(dim == 2 ? 4 : 3);
+            const unsigned int step = 1 + below(2);
+            upper_cells[t]          = chance(50) && lower_cells[t] > step ?
+                                        lower_cells[t] - step :
+                                        lower_cells[t] + step;
+            // an upper block that reaches beyond: 3 cells or more, so that
+            // its bottom has slave nodes across the lower block's top (with
+            // one node or a line of them it would tip: exit 1)
+            if (overhang > 0)
+              upper_cells[t] = std::max(upper_cells[t], 3.);
+          }
+        lower_cells[v] = 1 + below(2);
+        upper_cells[v] = 1 + below(2);
+        b.set("Geometry", "Subdivisions", vec(lower_cells));
+        b.set("Geometry", "Upper subdivisions", vec(upper_cells));
+        double lower_n = 1, upper_n = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower_n *= lower_cells[d];
+            upper_n *= upper_cells[d];
+          }
+        cells = lower_n + upper_n;
+        // on triangles (tetrahedra), sometimes (tetrahedra on a clamped
+        // lower block only: on the plane, with the lower block's top the
+        // slave, couple_pairs throws std::out_of_range, exit 1)
+        simplex = (dim == 2 || !on_plane) && chance(25);
+        if (simplex)
+          {
+            b.set("Geometry", "Cell type", "simplex");
+            cells *= dim == 2 ? 2 : 5;
+          }
+        shape = std::string(dim == 2 ? "2D" : "3D") + " two blocks" +
+                (simplex ? " of simplices" : "") + " (" + vec(lower_cells) +
+                " and " + vec(upper_cells) + " cells)" +
+                (overhang > 0 ? ", the upper one reaching " + text(overhang) +
+                                  " beyond the lower one" :
+                                "");
+      }
+
+    // sliders on the sides
+    std::string conditions = std::to_string(ids.lower_bottom) +
+                             (on_plane ? ": contact, " : ": fixed, ") +
+                             std::to_string(ids.upper_top) + ": traction";
+    std::string slider_names;
+    if (sliders)
+      for (unsigned int t = 0; t < dim - 1; ++t)
+        {
+          // one side or both
+          const unsigned int which = below(3);
+          for (unsigned int side = 0; side < 2; ++side)
+            if (which == 2 || which == side)
+              {
+                conditions +=
+                  ", " + std::to_string(2 * t + side) + ": normal fixed";
+                slider_names += (slider_names.empty() ? "" : ", ") +
+                                std::to_string(2 * t + side);
+              }
+        }
+    b.set("Boundary conditions", "Conditions", conditions);
+    // (in 3D an upper block that reaches beyond is the master: as the
+    // slave, beyond the master's edges, the Uzawa iteration converges at a
+    // rate of 0.98 per step with friction, exit 1 after 500 steps, and
+    // takes 130 without)
+    cut_pair(b, ids, !(dim == 3 && kind == Blocks::overhang));
+    if (on_plane)
+      {
+        b.scene.obstacle = "plane";
+        std::vector<double> normal(dim, 0.);
+        normal[v] = 1;
+        b.set("Foundation", "Point", vec(corner));
+        b.set("Foundation", "Normal", vec(normal));
+      }
+
+    // the loads: the pressure p on the upper block's top and a shear q
+    // (a path that unloads to zero has no Coulomb friction: with the
+    // predictor, its last step's threshold iteration stalls at thresholds
+    // of round-off size, exit 1 after 500 Uzawa steps; sliders come
+    // without friction: with given or Coulomb friction on the pair the
+    // Uzawa iteration converges at a rate of 0.98-0.99 per step, or
+    // stalls, in 2D and 3D, with or without shear, and often ends with
+    // exit 1 after 500 steps)
+    const double p     = rounded(c.E * c.strain);
+    double       ratio = 0;
+    if (sliders)
+      b.scene.law = "none";
+    else
+      ratio = friction(b, p, kind != Blocks::unloading);
+    double top_area = 1, contact_area = 1, narrowest = contact_width[0];
+    for (unsigned int t = 0; t < dim - 1; ++t)
+      {
+        top_area *= upper_width[t];
+        contact_area *= contact_width[t];
+        narrowest = std::min(narrowest, contact_width[t]);
+      }
+    // what friction holds per unit pressure on the top: F, or g over p on
+    // the contact's area
+    const double holds =
+      b.scene.law == "given" ? ratio * contact_area / top_area : ratio;
+    const double lever = on_plane ? lower_height + upper_height : upper_height;
+    const double shear_fraction =
+      sliders ? 0.5 * uniform(0, 1) :
+                0.3 * std::min(holds, narrowest / (2 * lever)) * uniform(0, 1);
+    const double        q = rounded(shear_fraction * p);
+    std::vector<double> traction(dim, 0.);
+    traction[v] = -p;
+    if (dim == 2 || chance(50))
+      traction[0] = chance(50) ? q : -q;
+    else
+      {
+        traction[0] = rounded(0.6 * q);
+        traction[1] = rounded(-0.8 * q);
+      }
+    const std::string top = std::to_string(ids.upper_top);
+    if (kind == Blocks::unloading)
+      {
+        // up to the full load at t = 1, back to none at t = 2
+        std::string value = top + ":";
+        for (unsigned int d = 0; d < dim; ++d)
+          value +=
+            std::string(d ? "; " : " ") +
+            (traction[d] == 0 ? "0" :
+                                text(traction[d]) + " * if(t <= 1, t, 2 - t)");
+        b.set("Boundary conditions", "Tractions", value);
+        const unsigned int steps = 2 + 2 * below(2);
+        b.set("Load path", "Number of steps", std::to_string(steps));
+        b.set("Load path", "End time", "2");
+      }
+    else
+      b.set("Boundary conditions", "Tractions", tractions(top, traction));
+
+    // a body force toward the lower block, sometimes (not on a path that
+    // unloads): up to the pressure's load again
+    double body_load = 0; // on the upper block per unit area of its top
+    if (kind != Blocks::unloading && chance(20))
+      {
+        std::vector<double> f(dim, 0.);
+        const double        magnitude =
+          rounded(p / (lower_height + upper_height) * uniform(0.1, 1));
+        f[v]      = -magnitude;
+        body_load = magnitude * upper_height;
+        b.set("Loads", "Body force", join(f, "; "));
+      }
+
+    // pulled off the lower block: exit 7 where nothing but the pair holds
+    // the upper block, or nothing but the plane the two (sliders on a
+    // clamped lower block are not asked: they hold the upper block
+    // sideways, it is not refused before the solve, and the solve ends
+    // with exit 1, v drifting)
+    if (!sliders || on_plane)
+      {
+        std::vector<double> pulled = traction;
+        pulled[v]                  = p * (body_load > 0 ? 3 : 1);
+        b.scene.pull_off           = tractions(top, pulled);
+        b.scene.pull_off_exits     = "7";
+      }
+    if (!sliders)
+      {
+        // along the first axis: 1.5 times what friction holds (coulomb: F
+        // times the normal load; given: g times the contact's area), p/2
+        // without friction
+        std::vector<double> over(dim, 0.);
+        over[v] = traction[v];
+        over[0] =
+          rounded(b.scene.law == "coulomb" ? 1.5 * ratio * (p + body_load) :
+                  b.scene.law == "given"   ? 1.5 * holds * p :
+                                             0.5 * p);
+        b.scene.overload = tractions(top, over);
+      }
+
+    // a few hundred cells: about 2000 DoFs (3D: 1500) on the last cycle,
+    // one cycle on simplices and on paths
+    const double growth =
+      refinement(b, dim, dim == 2 && !simplex && kind != Blocks::unloading);
+    const double limit =
+      dim == 2 ? (simplex ? 1200 : 600) : (simplex ? 1200 : 300);
+    unsigned int global = 0;
+    const double per    = dim == 2 ? 4 : 8;
+    while (global < 3 && cells * per * growth <= limit)
+      {
+        cells *= per;
+        ++global;
+      }
+    b.set("Refinement", "Initial global refinement", std::to_string(global));
+    output(b);
+
+    b.scene.name =
+      shape + upper + ", the lower one " +
+      (on_plane ? "on the plane" : "clamped") + ", the upper pressed by " +
+      text(p) + ", shear " + text(q) +
+      (sliders ? ", sliders on " + slider_names : ", held by the pair alone") +
+      ", pair " + b.scene.pair + ", friction " + b.scene.law +
+      (kind == Blocks::unloading ?
+         ", loaded to t = 1 and unloaded to zero at t = 2 in " +
+           *get(b.scene, "Load path", "Number of steps") + " steps" :
+         "");
+    return b.scene;
+  }
+
+  // Hertz's two cylinders ('two half discs'): the upper body pressed onto
+  // the lower one, whose flat bottom is clamped, by a pressure on its flat
+  // top; nothing else holds the upper body, the curved pair holds it
+  // sideways, and there is no tangential load. The pair written either way;
+  // the mesh graded toward the other body.
+  Scene
+  two_half_discs()
+  {
+    Builder b;
+    b.scene.dim      = 2;
+    b.scene.geometry = "two half discs";
+    b.scene.obstacle = "";
+    b.set("Geometry", "Type", "two half discs");
+    const Common      c     = material(b);
+    const std::string upper = upper_material(b, c);
+    // (one radius: with others, R2/R = 0.37, 0.62 or 1.6, the pairing
+    // finds the bodies overlapping by up to 3.7 on some meshes, either way
+    // round, exit 6)
+    const double        R = rounded(uniform(0.5, 2), 3);
+    std::vector<double> centre(2);
+    for (unsigned int d = 0; d < 2; ++d)
+      centre[d] = rounded(uniform(-1, 1), 3);
+    b.set("Geometry", "Center", vec(centre));
+    b.set("Geometry", "Radius", text(R));
+    b.set("Geometry", "Lower radius", text(R));
+
+    const double q = rounded(c.E * c.strain * 2);
+    friction(b, q);
+    b.set("Boundary conditions", "Conditions", "1: traction, 3: fixed");
+    b.set("Boundary conditions", "Tractions", "1: 0; " + text(-q));
+    b.scene.pair          = chance(50) ? "2: 0" : "0: 2";
+    b.scene.pair_turns    = true;
+    b.scene.one_body_pair = "0: 1";
+    b.set("Boundary conditions", "Contact pairs", b.scene.pair);
+    b.scene.pull_off       = "1: 0; " + text(q);
+    b.scene.pull_off_exits = "7";
+
+    const double growth = refinement(b, 2);
+    b.set("Refinement", "Initial global refinement", growth > 2 ? "1" : "2");
+    b.set("Geometry", "Pre-refinement steps", "3");
+    b.set("Geometry", "Pre-refinement distance", text(rounded(0.15 * R)));
+    b.set("Geometry", "Pre-refinement grading", "0.6");
+    output(b);
+
+    b.scene.name = "2D two half discs of radius " + text(R) + upper +
+                   ", pressed by " + text(q) + ", pair " + b.scene.pair +
+                   ", friction " + b.scene.law;
+    return b.scene;
+  }
+
   // ------------------------------------------------------------ shipped scenes
   Scene
   read_scene(const fs::path &file)
@@ -764,6 +1430,13 @@ namespace
     scene.obstacle =
       obstacle ? get(scene, "Obstacle", "Type").value_or("plane") : "";
     scene.law = get(scene, "Friction", "Law").value_or("none");
+    scene.pair =
+      get(scene, "Boundary conditions", "Contact pairs").value_or("");
+    if (!scene.pair.empty())
+      scene.one_body_pair =
+        scene.geometry == "two half discs" ? "0: 1" :
+        scene.geometry == "two blocks" ? (scene.dim == 2 ? "5: 3" : "7: 5") :
+                                         "";
     return scene;
   }
 
@@ -1105,6 +1778,16 @@ namespace
                              pick(std::vector<std::string>{"0", "-1", "1e-9"}),
                              "5,6",
                              "a radius not positive or too small");
+         if (s.geometry == "two half discs")
+           {
+             const std::string entry = chance(50) ? "Radius" : "Lower radius";
+             return with_value(s,
+                               {"Geometry", entry},
+                               pick(
+                                 std::vector<std::string>{"0", "-1", "1e-9"}),
+                               "5,6",
+                               "a radius not positive or too small");
+           }
          if (s.obstacle == "cylinder" || s.obstacle == "sphere")
            return with_value(s,
                              {"Obstacle", "Radius"},
@@ -1219,11 +1902,14 @@ namespace
          if (s.obstacle == "plane")
            candidates.push_back({"Foundation", "Point"}),
              candidates.push_back({"Foundation", "Normal"});
-         if (s.geometry == "rectangle")
+         if (s.geometry == "rectangle" || s.geometry == "two blocks")
            candidates.push_back({"Geometry", "Lower left corner"}),
              candidates.push_back({"Geometry", "Upper right corner"}),
              candidates.push_back({"Geometry", "Subdivisions"});
-         if (s.geometry == "half disc" || s.geometry == "quarter disc")
+         if (s.geometry == "two blocks")
+           candidates.push_back({"Geometry", "Upper subdivisions"});
+         if (s.geometry == "half disc" || s.geometry == "quarter disc" ||
+             s.geometry == "two half discs")
            candidates.push_back({"Geometry", "Center"});
          if (s.obstacle == "cylinder" || s.obstacle == "sphere")
            candidates.push_back({"Obstacle", "Center"});
@@ -1282,10 +1968,13 @@ namespace
        }});
     k.push_back(
       {"huge subdivisions", [](const Scene &s) -> std::optional<Mutant> {
-         if (s.geometry != "rectangle")
+         if (s.geometry != "rectangle" && s.geometry != "two blocks")
            return std::nullopt;
          return with_value(s,
-                           {"Geometry", "Subdivisions"},
+                           {"Geometry",
+                            s.geometry == "two blocks" && chance(50) ?
+                              "Upper subdivisions" :
+                              "Subdivisions"},
                            s.dim == 2 ? "60000, 60000" : "60000, 60000, 60000",
                            "6",
                            "a mesh too large for the memory");
@@ -1359,6 +2048,64 @@ namespace
                }
            }
        }});
+
+    // ---- contact pairs that cannot be one: exit 6; turned round: exit 0
+    const auto pair_sides = [](const Scene &s) {
+      const auto colon = s.pair.find(':');
+      return std::make_pair(trim(s.pair.substr(0, colon)),
+                            trim(s.pair.substr(colon + 1)));
+    };
+    k.push_back({"pair id missing",
+                 [pair_sides](const Scene &s) -> std::optional<Mutant> {
+                   // no geometry of two bodies has the id 9
+                   if (s.pair.empty())
+                     return std::nullopt;
+                   const auto [slave, master] = pair_sides(s);
+                   return with_value(s,
+                                     {"Boundary conditions", "Contact pairs"},
+                                     chance(50) ? "9: " + master :
+                                                  slave + ": 9",
+                                     "6",
+                                     "a pair id the geometry does not have");
+                 }});
+    k.push_back(
+      {"pair on one body", [](const Scene &s) -> std::optional<Mutant> {
+         if (s.one_body_pair.empty())
+           return std::nullopt;
+         return with_value(s,
+                           {"Boundary conditions", "Contact pairs"},
+                           s.one_body_pair,
+                           "6",
+                           "both ids of the pair on one body");
+       }});
+    k.push_back(
+      {"pair id twice", [pair_sides](const Scene &s) -> std::optional<Mutant> {
+         // the master in a second pair, with a free or loaded id
+         // of the slave's body
+         if (s.one_body_pair.empty())
+           return std::nullopt;
+         const std::string other =
+           trim(s.one_body_pair.substr(s.one_body_pair.find(':') + 1));
+         const auto [slave, master] = pair_sides(s);
+         return with_value(s,
+                           {"Boundary conditions", "Contact pairs"},
+                           s.pair + ", " + other + ": " + master,
+                           "6",
+                           "an id in two pairs");
+       }});
+    k.push_back({"pair turned round",
+                 [pair_sides](const Scene &s) -> std::optional<Mutant> {
+                   // the generated scenes whose pair was drawn either way
+                   // (a shipped path would cost its steps again)
+                   if (!s.pair_turns)
+                     return std::nullopt;
+                   const auto [slave, master] = pair_sides(s);
+                   return with_value(s,
+                                     {"Boundary conditions", "Contact pairs"},
+                                     master + ": " + slave,
+                                     "0",
+                                     "the pair's slave and master swapped");
+                 }});
 
     // ---- mesh files: exit 3 (unreadable)
     k.push_back(
@@ -1634,6 +2381,39 @@ main(int argc, char **argv)
       valid.push_back(scene);
     }
 
+  // ---- the valid scenes of two bodies, each family once or twice, 4 of
+  // them on 2 ranks: the 3D two blocks with sliders, the 2D path that
+  // unloads, the second Gmsh file of triangles (every rank reads it whole)
+  // and the second pair of half discs
+  const std::vector<std::pair<unsigned int, std::function<Scene()>>>
+    pair_families = {
+      {1, [&out] { return two_blocks(out, 2, Blocks::slider); }},
+      {1, [&out] { return two_blocks(out, 2, Blocks::mesh_file); }},
+      {1, [] { return two_half_discs(); }},
+      {1, [&out] { return two_blocks(out, 2, Blocks::stack); }},
+      {2, [&out] { return two_blocks(out, 3, Blocks::slider); }},
+      {1, [&out] { return two_blocks(out, 2, Blocks::overhang); }},
+      {2, [&out] { return two_blocks(out, 2, Blocks::unloading); }},
+      {1, [&out] { return two_blocks(out, 3, Blocks::stack); }},
+      {2, [&out] { return two_blocks(out, 2, Blocks::mesh_file); }},
+      {2, [] { return two_half_discs(); }},
+      {1, [&out] { return two_blocks(out, 3, Blocks::overhang); }},
+      {1, [&out] { return two_blocks(out, 2, Blocks::slider); }},
+      {1, [&out] { return two_blocks(out, 3, Blocks::unloading); }}};
+  for (const auto &[ranks, family] : pair_families)
+    {
+      Scene scene = family();
+      scene.ranks = ranks;
+      char name[32];
+      std::snprintf(name, sizeof name, "valid_%02zu", valid.size());
+      write(out / (std::string(name) + ".prm"),
+            "# random_inputs " + std::string(name) + ": " + scene.name +
+              " (valid: exit 0; tests/random_scenes.cc)\n",
+            scene.lines);
+      manifest << name << '\t' << scene.ranks << "\t0\t" << scene.name << '\n';
+      valid.push_back(scene);
+    }
+
   // ---- the mutated inputs: each kind in turn, on a random base (a shipped
   // scene made cheap or a valid scene) to which it applies
   std::vector<fs::path> shipped_files;
@@ -1675,7 +2455,7 @@ main(int argc, char **argv)
                    [&rank](const Kind &a, const Kind &b) {
                      return rank(a) < rank(b);
                    });
-  const unsigned int                             n_mutated = 30;
+  const unsigned int                             n_mutated = 34;
   std::set<std::pair<std::string, unsigned int>> used;
   for (unsigned int i = 0; i < n_mutated; ++i)
     {
