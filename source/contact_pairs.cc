@@ -675,6 +675,7 @@ namespace dualcontact
     const Mapping<dim>              &mapping,
     const DoFHandler<dim>           &dof_handler,
     const AffineConstraints<double> &hanging_node_constraints,
+    const AffineConstraints<double> &all_constraints,
     const Scene<dim>                &scene,
     const std::map<types::global_dof_index, types::boundary_id> &slave_id_of)
   {
@@ -844,7 +845,10 @@ namespace dualcontact
             double             sum_m = 0.;
             for (const auto &[j, m] : coupling.master[i])
               sum_m += m;
-            if (!(sum_m > 1e-12 * coupling.weight[i]) ||
+            // (a node covered by less than 1e-4 of its weight carries less
+            // than that of a node's force, and its augmentation factor
+            // 1 / coverage would magnify the round-off of its gap)
+            if (!(sum_m > 1e-4 * coupling.weight[i]) ||
                 !sees_master_point(coupling.master[i], sum_m, master_points))
               {
                 keep[s] = false;
@@ -860,8 +864,15 @@ namespace dualcontact
             // pressure there (the contact patch test with the slave beyond
             // the master's end, doc/two_bodies.md).
             const double coverage = sum_m / coupling.weight[i];
+            // Its augmentation is a whole node's, m_s a_s r with a_s =
+            // 1 / coverage: with m_s r alone a node covered by a sliver of
+            // the master holds its gap so weakly that the Uzawa iteration
+            // contracts at 0.9-0.98 a step (an upper block reaching beyond
+            // the lower one as the slave); a per-node r is the augmented
+            // Lagrangian's diagonal R (doc/theory.md §5).
             if (std::abs(coverage - 1.) > 1e-12)
               node.weight *= coverage;
+            node.augmentation = coverage < 1. ? 1. / coverage : 1.;
             Point<dim>                     facing;
             Tensor<1, dim>                 master_normal;
             std::map<unsigned int, double> condensed;
@@ -888,7 +899,22 @@ namespace dualcontact
             // pressure by O(a/R) (doc/two_bodies.md).
             node.normal = node.body_normal - master_normal;
             node.normal /= node.normal.norm();
-            node.tangents = tangent_basis(node.normal);
+            // A support that holds the slave node in a direction (a slider
+            // on a plane of symmetry, a clamp at the surface's end) takes
+            // the contact's force along it: the normal is turned into the
+            // plane the node moves in (at a cut of symmetry the bisector
+            // tilts off it by O(h/R)), and friction acts along free
+            // tangents only. A multiplier along a held tangent would move
+            // the master alone, through the few c_sj of the node's end, a
+            // mode so weak that the Uzawa iteration crawls at 0.98 a step.
+            const std::vector<Tensor<1, dim>> held =
+              held_directions(node, all_constraints);
+            Tensor<1, dim> turned = node.normal;
+            for (const Tensor<1, dim> &h : held)
+              turned -= (turned * h) * h;
+            if (turned.norm() > 0.5)
+              node.normal = turned / turned.norm();
+            node.tangents = free_tangents(node.normal, held);
             node.gap0     = node.normal * (facing - node.position);
             // Two curved surfaces that touch overlap by O(h^2 / R) between
             // their chords: that is the discrete geometry, not bad input.
@@ -1033,6 +1059,7 @@ namespace dualcontact
   template void ContactSet<dim>::couple_pairs(                                 \
     const Mapping<dim> &,                                                      \
     const DoFHandler<dim> &,                                                   \
+    const AffineConstraints<double> &,                                         \
     const AffineConstraints<double> &,                                         \
     const Scene<dim> &,                                                        \
     const std::map<types::global_dof_index, types::boundary_id> &);            \

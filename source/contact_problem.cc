@@ -211,6 +211,7 @@ namespace dualcontact
     };
     previous_size.l1_norm    = carry(now.l1_norm, previous_size.l1_norm);
     previous_size.l1_max     = carry(now.l1_max, previous_size.l1_max);
+    previous_size.g_norm     = carry(now.g_norm, previous_size.g_norm);
     previous_size.v_norm     = carry(now.v_norm, previous_size.v_norm);
     previous_size.v_max      = carry(now.v_max, previous_size.v_max);
     previous_size.force_norm = carry(now.force_norm, previous_size.force_norm);
@@ -824,11 +825,12 @@ namespace dualcontact
   ContactProblem<dim>::solution_size() const
   {
     SolutionSize size;
-    double       sums[3] = {0., 0., 0.};
+    double       sums[4] = {0., 0., 0., 0.};
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
         const double m = contact_set.nodes[s].weight;
         sums[2] += m * contact_set.l1[s];
+        sums[3] += contact_set.threshold[s] * contact_set.threshold[s];
         sums[0] += contact_set.l1[s] * contact_set.l1[s];
         sums[1] +=
           m * m *
@@ -836,10 +838,11 @@ namespace dualcontact
            (contact_set.friction ? contact_set.l2[s].norm_square() : 0.));
         size.l1_max = std::max(size.l1_max, contact_set.l1[s]);
       }
-    Utilities::MPI::sum(ArrayView<const double>(sums, 3),
+    Utilities::MPI::sum(ArrayView<const double>(sums, 4),
                         mpi_communicator,
-                        ArrayView<double>(sums, 3));
+                        ArrayView<double>(sums, 4));
     size.contact_force = sums[2];
+    size.g_norm        = std::sqrt(sums[3]);
     size.l1_norm       = std::sqrt(sums[0]);
     size.force_norm    = std::sqrt(sums[1]);
     size.l1_max        = Utilities::MPI::max(size.l1_max, mpi_communicator);

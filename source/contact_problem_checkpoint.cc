@@ -111,6 +111,7 @@ namespace dualcontact
     record.set("dissipated", dissipated);
     record.set("size_l1_norm", previous_size.l1_norm);
     record.set("size_l1_max", previous_size.l1_max);
+    record.set("size_g_norm", previous_size.g_norm);
     record.set("size_v_norm", previous_size.v_norm);
     record.set("size_v_max", previous_size.v_max);
     record.set("size_force_norm", previous_size.force_norm);
@@ -290,6 +291,7 @@ namespace dualcontact
     SolutionSize saved_size;
     saved_size.l1_norm             = record.number("size_l1_norm", 0.);
     saved_size.l1_max              = record.number("size_l1_max", 0.);
+    saved_size.g_norm              = record.number("size_g_norm", 0.);
     saved_size.v_norm              = record.number("size_v_norm", 0.);
     saved_size.v_max               = record.number("size_v_max", 0.);
     saved_size.force_norm          = record.number("size_force_norm", 0.);

@@ -152,6 +152,8 @@ namespace dualcontact
     // body, along n_s (the slave nodes' contact direction) if it is the
     // slave, along -n_s if it is the master. Otherwise the contact would
     // have to pull, and the iterations would wander with the proximal term.
+    // So must the loads of a body whose supports leave it free to move
+    // along that direction (sliders that hold it sideways only).
     // A body without load rests (or parts from the other body). Where the
     // pair is flat, friction alone holds the loads' tangential part, as
     // against a plane obstacle: no more than the friction law can resist,
@@ -173,7 +175,8 @@ namespace dualcontact
     const TrilinosWrappers::MPI::Vector body_plus_one =
       bodies_of_dofs(body_of_coarse_cell);
     std::vector<unsigned int> component(locally_owned_dofs.n_elements());
-    std::vector<unsigned int> held(n_bodies, 0);
+    // 1 where a support holds the body, 2 where an obstacle does
+    std::vector<unsigned int>                 held(n_bodies, 0);
     std::vector<std::set<types::boundary_id>> ids(n_bodies);
     std::vector<types::global_dof_index>      dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -220,7 +223,7 @@ namespace dualcontact
           static_cast<unsigned int>(bodies[node.dofs[0]]) - 1;
         if (node.masters.empty())
           {
-            held[slave] = 1;
+            held[slave] = 2;
             continue;
           }
         const unsigned int master =
@@ -284,7 +287,7 @@ namespace dualcontact
           std::accumulate(pair_sides.begin() + b * n_bodies,
                           pair_sides.begin() + (b + 1) * n_bodies,
                           0u);
-        if (held[b] || partners != 1)
+        if (held[b] == 2 || partners != 1)
           continue;
         Tensor<1, dim> d, f;
         for (unsigned int c = 0; c < dim; ++c)
@@ -294,10 +297,18 @@ namespace dualcontact
           }
         if (!(d.norm() > 0.))
           continue;
-        // a body without load rests, or parts from the other body
-        if (!(f.norm() > 1e-10 * largest))
+        const bool supported = held[b] == 1;
+        if (supported && !scene.translation_is_free(d / d.norm(),
+                                                    triangulation,
+                                                    &body_of_coarse_cell,
+                                                    b))
           continue;
+        // a body without load rests, or parts from the other body; one that
+        // supports hold sideways, without load along d
         const double toward = f * d / d.norm();
+        if (!(f.norm() > 1e-10 * largest) ||
+            (supported && !(std::abs(toward) > 1e-10 * largest)))
+          continue;
         // the body by its boundary ids, as the user knows it
         const auto body_name = [&]() {
           std::set<types::boundary_id> all_ids;
@@ -316,16 +327,22 @@ namespace dualcontact
             for (unsigned int c = 0; c < dim; ++c)
               force += (c == 0 ? "(" : ", ") + format_number(f[c]);
             throw InputError(
-              "No equilibrium: nothing holds " + body_name() +
-                " (no 'fixed' or 'normal fixed' id, no obstacle), and its "
-                "loads " +
-                force +
+              "No equilibrium: " +
+                (supported ? "the supports of " + body_name() +
+                               " leave it free to move along the normal of "
+                               "its contact pair" :
+                             "nothing holds " + body_name() +
+                               " (no 'fixed' or 'normal fixed' id, no "
+                               "obstacle)") +
+                ", and its loads " + force +
                 ") do not press it onto the other body of its contact pair: "
                 "only that contact could hold it, and it can only push. Hold "
                 "the body (<Boundary conditions/Conditions>) or load it toward "
                 "the other body.",
               exit_no_equilibrium);
           }
+        if (supported)
+          continue;
         // the tangential part, on a flat pair (a curved one also holds it
         // by its normal pressure)
         if (turn[b] > 1e-8 * measure[2 * b])

@@ -88,6 +88,19 @@ namespace dualcontact
     // body's top) must not cancel.
     record.obstacle_force = on_obstacle * contact_set.normal;
     record.contact_force  = record.obstacle_force;
+    // the tangential forces likewise: each contact's in the plane normal to
+    // its own direction, their magnitudes summed (the sum of the vectors
+    // would depend on which side of a pair is the slave: in a stack on the
+    // plane the pair's force on the slave is the upper load's, or its
+    // opposite)
+    const auto tangential = [](const Tensor<1, dim> &force,
+                               const Tensor<1, dim> &direction) {
+      return direction.norm() > 0. ? (force - (force * direction) * direction /
+                                                direction.norm_square())
+                                       .norm() :
+                                     force.norm();
+    };
+    record.tangential_force = tangential(on_obstacle, contact_set.normal);
     for (const auto &[slave_id, master_id] : scene.contact_pairs())
       {
         Tensor<1, dim> force, pressed, facing;
@@ -110,14 +123,10 @@ namespace dualcontact
           direction.norm() > 0. ? force * direction / direction.norm() : 0.;
         record.pair_force.push_back(pair_force);
         record.contact_force += pair_force;
+        record.tangential_force += tangential(force, direction);
       }
-    // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s),
-    // and its part in the tangent plane of Gamma_C's mean direction
-    const Tensor<1, dim> resultant   = -on_obstacle;
-    const Tensor<1, dim> transmitted = -on_obstacle + on_slave;
-    record.tangential_force =
-      (transmitted - (transmitted * contact_set.normal) * contact_set.normal)
-        .norm();
+    // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s)
+    const Tensor<1, dim> resultant = -on_obstacle;
     record.max_pressure = Utilities::MPI::max(peak, mpi_communicator);
     for (unsigned int c = 0; c < dim; ++c)
       record.resultant[c] = resultant[c];

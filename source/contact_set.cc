@@ -137,8 +137,12 @@ namespace dualcontact
           node.body_normal /= node.body_normal.norm();
         nodes.push_back(node);
       }
-    couple_pairs(
-      mapping, dof_handler, hanging_node_constraints, scene, slave_id_of);
+    couple_pairs(mapping,
+                 dof_handler,
+                 hanging_node_constraints,
+                 all_constraints,
+                 scene,
+                 slave_id_of);
     place_obstacle(scene, comm);
 
     l1.assign(nodes.size(), 0.);
@@ -382,9 +386,10 @@ namespace dualcontact
     const TrilinosWrappers::MPI::Vector &w = with_masters(v);
     for (unsigned int s = 0; s < nodes.size(); ++s)
       {
-        z[s] = l1[s] + r * (normal_displacement(w, s) - nodes[s].gap0);
+        const double a = nodes[s].augmentation;
+        z[s] = l1[s] + a * r * (normal_displacement(w, s) - nodes[s].gap0);
         if (friction)
-          y[s] = l2[s] + r_t * slip(w, s);
+          y[s] = l2[s] + a * r_t * slip(w, s);
       }
   }
 
@@ -422,6 +427,94 @@ namespace dualcontact
     dofs.compress();
     return dofs;
   }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  held_directions(const ContactNode<dim>          &node,
+                  const AffineConstraints<double> &constraints)
+  {
+    std::vector<Tensor<1, dim>> held;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        if (!constraints.is_constrained(node.dofs[c]))
+          continue;
+        // v_c = sum_j a_j v_j + b, the v_j the node's own: (e_c - sum_j a_j
+        // e_j) . v = b
+        Tensor<1, dim> h;
+        h[c]            = 1.;
+        bool       own  = true;
+        const auto line = constraints.get_constraint_entries(node.dofs[c]);
+        if (line != nullptr)
+          for (const auto &[dof, a] : *line)
+            {
+              const auto it =
+                std::find(node.dofs.begin(), node.dofs.end(), dof);
+              own &= it != node.dofs.end();
+              if (it != node.dofs.end())
+                h[it - node.dofs.begin()] -= a;
+            }
+        if (!own)
+          continue;
+        for (const Tensor<1, dim> &g : held)
+          h -= (h * g) * g;
+        if (h.norm() > 1e-8)
+          held.push_back(h / h.norm());
+      }
+    return held;
+  }
+
+  template <int dim>
+  std::array<Tensor<1, dim>, dim - 1>
+  free_tangents(const Tensor<1, dim>              &n,
+                const std::vector<Tensor<1, dim>> &held)
+  {
+    std::array<Tensor<1, dim>, dim - 1> t = tangent_basis(n);
+    if (held.empty())
+      return t;
+    // G_kl = t_k . P t_l, P the projection onto the held directions: an
+    // eigenvalue 1 is a tangent they contain
+    const double tolerance = 1e-8;
+    const auto   G         = [&](const unsigned int k, const unsigned int l) {
+      double sum = 0.;
+      for (const Tensor<1, dim> &h : held)
+        sum += (t[k] * h) * (t[l] * h);
+      return sum;
+    };
+    if constexpr (dim == 2)
+      {
+        if (G(0, 0) > 1. - tolerance)
+          t[0] = Tensor<1, dim>();
+      }
+    else
+      {
+        const double a = G(0, 0), b = G(0, 1), c = G(1, 1);
+        const double mean = (a + c) / 2, radius = std::hypot((a - c) / 2, b);
+        if (mean - radius > 1. - tolerance) // both held
+          return {};
+        if (mean + radius > 1. - tolerance) // one: keep the other
+          {
+            // the eigenvector of the larger eigenvalue, a tangent held
+            const double         lambda = mean + radius;
+            const Tensor<1, dim> w =
+              std::abs(a - lambda) > std::abs(c - lambda) ?
+                b * t[0] + (lambda - a) * t[1] :
+                (lambda - c) * t[0] + b * t[1];
+            const Tensor<1, dim> along = w.norm() > 0. ? w / w.norm() : t[0];
+            t[0]                       = cross_product_3d(n / n.norm(), along);
+            t[1]                       = Tensor<1, dim>();
+          }
+      }
+    return t;
+  }
+
+  template std::vector<Tensor<1, 2>>
+  held_directions(const ContactNode<2> &, const AffineConstraints<double> &);
+  template std::vector<Tensor<1, 3>>
+  held_directions(const ContactNode<3> &, const AffineConstraints<double> &);
+  template std::array<Tensor<1, 2>, 1>
+  free_tangents(const Tensor<1, 2> &, const std::vector<Tensor<1, 2>> &);
+  template std::array<Tensor<1, 3>, 2>
+  free_tangents(const Tensor<1, 3> &, const std::vector<Tensor<1, 3>> &);
 
   template class ContactSet<2>;
   template class ContactSet<3>;

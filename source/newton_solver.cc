@@ -136,9 +136,11 @@ namespace dualcontact
     std::vector<double> coefficient; // of each node: 1, then -c_sj
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
-        const double          m_r  = contact.nodes[s].weight * system->r;
-        const double          m_rt = contact.nodes[s].weight * system->r_t;
-        const Tensor<1, dim> &n    = contact.nodes[s].normal;
+        const double m_a =
+          contact.nodes[s].weight * contact.nodes[s].augmentation;
+        const double                               m_r  = m_a * system->r;
+        const double                               m_rt = m_a * system->r_t;
+        const Tensor<1, dim>                      &n = contact.nodes[s].normal;
         const std::array<Tensor<1, dim>, dim - 1> &t =
           contact.nodes[s].tangents;
         local_matrix = 0;
@@ -326,18 +328,19 @@ namespace dualcontact
       for (unsigned int s = 0; s < n; ++s)
         {
           const double m  = contact.nodes[s].weight;
-          const double zs = z[s] + alpha * r * dn[s];
+          const double a  = contact.nodes[s].augmentation;
+          const double zs = z[s] + alpha * a * r * dn[s];
           if (zs > 0. || (zs == 0. && dn[s] > 0.))
             {
               local[0] += m * zs * dn[s];
-              local[1] += m * r * dn[s] * dn[s];
+              local[1] += m * a * r * dn[s] * dn[s];
             }
           if (contact.friction)
             {
-              const Tensor<1, dim - 1> ys = y[s] + alpha * r_t * dt[s];
+              const Tensor<1, dim - 1> ys = y[s] + alpha * a * r_t * dt[s];
               const double             g  = contact.threshold[s];
               local[0] += m * (project_onto_disc(ys, g) * dt[s]);
-              local[1] += m * r_t * huber_curvature(ys, g, dt[s]);
+              local[1] += m * a * r_t * huber_curvature(ys, g, dt[s]);
             }
         }
       double global[2];
@@ -353,12 +356,13 @@ namespace dualcontact
       for (unsigned int s = 0; s < n; ++s)
         {
           const double m = contact.nodes[s].weight;
-          local += m / (2. * r) *
-                   (std::pow(positive_part(z[s] + r * dn[s]), 2) -
+          const double a = contact.nodes[s].augmentation;
+          local += m / (2. * a * r) *
+                   (std::pow(positive_part(z[s] + a * r * dn[s]), 2) -
                     std::pow(positive_part(z[s]), 2));
           if (contact.friction)
-            local += m / r_t *
-                     (huber(Tensor<1, dim - 1>(y[s] + r_t * dt[s]),
+            local += m / (a * r_t) *
+                     (huber(Tensor<1, dim - 1>(y[s] + a * r_t * dt[s]),
                             contact.threshold[s]) -
                       huber(y[s], contact.threshold[s]));
         }
@@ -397,9 +401,10 @@ namespace dualcontact
     // the initial overlap, m_s r (g0_s)^-, sets the scale.
     double overlap = 0.;
     for (unsigned int s = 0; s < n_nodes; ++s)
-      overlap += std::pow(contact.nodes[s].weight * system->r *
-                            std::max(-contact.nodes[s].gap0, 0.),
-                          2);
+      overlap +=
+        std::pow(contact.nodes[s].weight * contact.nodes[s].augmentation *
+                   system->r * std::max(-contact.nodes[s].gap0, 0.),
+                 2);
     overlap          = std::sqrt(Utilities::MPI::sum(overlap, comm));
     double reference = load > 0. ? load : overlap;
     if (contact_forces > 0.)

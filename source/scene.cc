@@ -1109,7 +1109,9 @@ namespace dualcontact
   template <int dim>
   bool
   Scene<dim>::translation_is_free(const Tensor<1, dim>     &e,
-                                  const Triangulation<dim> &triangulation) const
+                                  const Triangulation<dim> &triangulation,
+                                  const std::vector<unsigned int> *bodies,
+                                  const unsigned int               body) const
   {
     double     measure = 0;
     const auto gram    = constrained_gram(
@@ -1117,7 +1119,11 @@ namespace dualcontact
       ids_with(BoundaryCondition::fixed),
       ids_with(BoundaryCondition::normal_fixed),
       1,
-      [&e](const unsigned int, const Point<dim> &, const auto &) { return e; },
+      [&](const unsigned int, const Point<dim> &, const auto &cell) {
+        return bodies == nullptr || body_of<dim>(cell, *bodies) == body ?
+                    e :
+                    Tensor<1, dim>();
+      },
       measure);
     return gram(0, 0) <= 1e-12 * measure;
   }

@@ -98,16 +98,18 @@ namespace dualcontact
 
     const MPI_Comm comm = v.get_mpi_communicator();
     // On a later step of a load path the change of g is measured against
-    // the larger of the new g and the previous step's (g^0 here), as the
-    // other tests along a path are (doc/theory.md §11): where the path
-    // brings the body back to its start, g is round-off, and a change
-    // relative to it alone never falls below the tolerance.
+    // the largest of the new g, g^0 and the previous step's g, as the other
+    // tests along a path are (doc/theory.md §11): where the path brings the
+    // body back to its start, g is round-off, and a change relative to it
+    // alone never falls below the tolerance (nor relative to g^0, the
+    // predictor's, round-off as well on a path that unloads to zero).
     double g_start = 0.;
     if (start == WarmStart::previous_step)
       {
         for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
           g_start += contact.threshold[s] * contact.threshold[s];
-        g_start = std::sqrt(Utilities::MPI::sum(g_start, comm));
+        g_start = std::max(std::sqrt(Utilities::MPI::sum(g_start, comm)),
+                           system.previous.g_norm);
       }
     for (unsigned int step = 1; step <= parameters.max_steps; ++step)
       {

@@ -397,13 +397,16 @@ namespace dualcontact
     std::vector<IterationRecord>        history;
     unsigned int                        lowered_at = 0;
     // Merged with the threshold iteration on a later step of a load path:
-    // the change of g is measured against the larger of the new g and the
-    // step's first one, the previous step's (doc/theory.md §11). Where the
-    // path brings the body back to its start, g is round-off, and a change
-    // relative to it alone never falls below the tolerance.
+    // the change of g is measured against the largest of the new g, the
+    // step's first one and the previous step's (doc/theory.md §11). Where
+    // the path brings the body back to its start, g is round-off, and a
+    // change relative to it alone never falls below the tolerance; the
+    // step's first g is the predictor's, round-off as well on a path that
+    // unloads to zero.
     const double threshold_scale =
       update_threshold && system.previous.l1_norm > 0. ?
-        threshold_norm(contact, v.get_mpi_communicator()) :
+        std::max(threshold_norm(contact, v.get_mpi_communicator()),
+                 system.previous.g_norm) :
         0.;
     std::vector<double> threshold_before;
     const auto          say = [observer](const std::string &text) {

@@ -33,11 +33,12 @@
 //                   of two blocks of triangles that the generator writes
 //                   (format 2.2 or 4.1, nodes of their own on each side of
 //                   the cut, the upper block narrower or wider), and Hertz's
-//                   two half discs. The upper body is pressed onto the lower
-//                   one; where its pair alone holds it, its tangential load
-//                   is at most 0.3 of what friction holds (none without
-//                   friction) and 0.3 of the tipping limit. Kinds of scene
-//                   that fail today are not drawn (two_blocks() says which).
+//                   two half discs of one radius or two. The upper body is
+//                   pressed onto the lower one; where its pair alone holds
+//                   it, its tangential load is at most 0.3 of what friction
+//                   holds (none without friction) and 0.3 of the tipping
+//                   limit; pulled off, it must be refused (exit 7) whether
+//                   nothing or sliders hold it sideways.
 //   mutated_NN.prm  inputs derived from the shipped scenes prm/*.prm (made
 //                   cheap first: one cycle, at most 2 global refinements in
 //                   2D and 1 in 3D, few pre-refinement steps, no vtu) and
@@ -1023,10 +1024,7 @@ namespace
   // it, else at most 0.3 of what friction holds (none without friction)
   // and 0.3 of the tipping limit, half the contact's width over the lever
   // (the upper block's height on a clamped lower block, both blocks' on the
-  // plane). Kinds of scene that fail today (exit 1) are not drawn: a load
-  // path that unloads to zero with Coulomb friction, sliders with friction
-  // (see the loads below), tetrahedra on the plane, and in 3D an upper
-  // block that reaches beyond as the slave.
+  // plane).
   enum class Blocks
   {
     slider,
@@ -1176,10 +1174,8 @@ namespace
             upper_n *= upper_cells[d];
           }
         cells = lower_n + upper_n;
-        // on triangles (tetrahedra), sometimes (tetrahedra on a clamped
-        // lower block only: on the plane, with the lower block's top the
-        // slave, couple_pairs throws std::out_of_range, exit 1)
-        simplex = (dim == 2 || !on_plane) && chance(25);
+        // on triangles (tetrahedra), sometimes
+        simplex = chance(25);
         if (simplex)
           {
             b.set("Geometry", "Cell type", "simplex");
@@ -1213,11 +1209,7 @@ namespace
               }
         }
     b.set("Boundary conditions", "Conditions", conditions);
-    // (in 3D an upper block that reaches beyond is the master: as the
-    // slave, beyond the master's edges, the Uzawa iteration converges at a
-    // rate of 0.98 per step with friction, exit 1 after 500 steps, and
-    // takes 130 without)
-    cut_pair(b, ids, !(dim == 3 && kind == Blocks::overhang));
+    cut_pair(b, ids);
     if (on_plane)
       {
         b.scene.obstacle = "plane";
@@ -1228,20 +1220,9 @@ namespace
       }
 
     // the loads: the pressure p on the upper block's top and a shear q
-    // (a path that unloads to zero has no Coulomb friction: with the
-    // predictor, its last step's threshold iteration stalls at thresholds
-    // of round-off size, exit 1 after 500 Uzawa steps; sliders come
-    // without friction: with given or Coulomb friction on the pair the
-    // Uzawa iteration converges at a rate of 0.98-0.99 per step, or
-    // stalls, in 2D and 3D, with or without shear, and often ends with
-    // exit 1 after 500 steps)
-    const double p     = rounded(c.E * c.strain);
-    double       ratio = 0;
-    if (sliders)
-      b.scene.law = "none";
-    else
-      ratio = friction(b, p, kind != Blocks::unloading);
-    double top_area = 1, contact_area = 1, narrowest = contact_width[0];
+    const double p        = rounded(c.E * c.strain);
+    const double ratio    = friction(b, p);
+    double       top_area = 1, contact_area = 1, narrowest = contact_width[0];
     for (unsigned int t = 0; t < dim - 1; ++t)
       {
         top_area *= upper_width[t];
@@ -1297,18 +1278,15 @@ namespace
         b.set("Loads", "Body force", join(f, "; "));
       }
 
-    // pulled off the lower block: exit 7 where nothing but the pair holds
-    // the upper block, or nothing but the plane the two (sliders on a
-    // clamped lower block are not asked: they hold the upper block
-    // sideways, it is not refused before the solve, and the solve ends
-    // with exit 1, v drifting)
-    if (!sliders || on_plane)
-      {
-        std::vector<double> pulled = traction;
-        pulled[v]                  = p * (body_load > 0 ? 3 : 1);
-        b.scene.pull_off           = tractions(top, pulled);
-        b.scene.pull_off_exits     = "7";
-      }
+    // pulled off the lower block: exit 7, where nothing but the pair holds
+    // the upper block upward (sliders hold it sideways only), or nothing
+    // but the plane the two
+    {
+      std::vector<double> pulled = traction;
+      pulled[v]                  = p * (body_load > 0 ? 3 : 1);
+      b.scene.pull_off           = tractions(top, pulled);
+      b.scene.pull_off_exits     = "7";
+    }
     if (!sliders)
       {
         // along the first axis: 1.5 times what friction holds (coulomb: F
@@ -1367,16 +1345,15 @@ namespace
     b.set("Geometry", "Type", "two half discs");
     const Common      c     = material(b);
     const std::string upper = upper_material(b, c);
-    // (one radius: with others, R2/R = 0.37, 0.62 or 1.6, the pairing
-    // finds the bodies overlapping by up to 3.7 on some meshes, either way
-    // round, exit 6)
-    const double        R = rounded(uniform(0.5, 2), 3);
+    // the lower one's radius R2 from 0.3 R to 3 R, or R
+    const double        R  = rounded(uniform(0.5, 2), 3);
+    const double        R2 = chance(50) ? R : rounded(R * uniform(0.3, 3), 3);
     std::vector<double> centre(2);
     for (unsigned int d = 0; d < 2; ++d)
       centre[d] = rounded(uniform(-1, 1), 3);
     b.set("Geometry", "Center", vec(centre));
     b.set("Geometry", "Radius", text(R));
-    b.set("Geometry", "Lower radius", text(R));
+    b.set("Geometry", "Lower radius", text(R2));
 
     const double q = rounded(c.E * c.strain * 2);
     friction(b, q);
@@ -1396,9 +1373,9 @@ namespace
     b.set("Geometry", "Pre-refinement grading", "0.6");
     output(b);
 
-    b.scene.name = "2D two half discs of radius " + text(R) + upper +
-                   ", pressed by " + text(q) + ", pair " + b.scene.pair +
-                   ", friction " + b.scene.law;
+    b.scene.name = "2D two half discs of radii " + text(R) + " (upper) and " +
+                   text(R2) + upper + ", pressed by " + text(q) + ", pair " +
+                   b.scene.pair + ", friction " + b.scene.law;
     return b.scene;
   }
 

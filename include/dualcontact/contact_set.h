@@ -50,7 +50,11 @@ namespace dualcontact
     std::array<types::global_dof_index, dim> dofs; // one per component
     Point<dim>                               position;
     double                                   weight = 0.; // m_s = int phi_s
-    double                                   gap0   = 0.; // g0(x_s)
+    // a_s, the factor on r and r_t at the node: 1, or 1 / coverage on a
+    // slave node that the master covers in part, so that its augmentation
+    // m_s a_s r is a whole node's (couple_pairs())
+    double augmentation = 1.;
+    double gap0         = 0.; // g0(x_s)
     // n_s = -m(x_s), outward for the body, and an orthonormal basis of the
     // plane orthogonal to it (tangent_basis in obstacle.h)
     Tensor<1, dim>                      normal;
@@ -64,6 +68,27 @@ namespace dualcontact
     // the slave id of its pair; invalid_boundary_id against the obstacle
     types::boundary_id pair_slave_id = numbers::invalid_boundary_id;
   };
+
+  /**
+   * An orthonormal basis of the directions in which the supports hold
+   * `node`: a 'fixed' component, a 'normal fixed' plane through it. They are
+   * the lines of `constraints` on the node's DoFs that involve no other
+   * node's DoFs (a hanging node's line is no support).
+   */
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  held_directions(const ContactNode<dim>          &node,
+                  const AffineConstraints<double> &constraints);
+
+  /**
+   * An orthonormal basis of the plane orthogonal to `n`, in which each
+   * direction the `held` ones contain is a zero vector: friction does not act
+   * along a direction a support holds (doc/two_bodies.md).
+   */
+  template <int dim>
+  std::array<Tensor<1, dim>, dim - 1>
+  free_tangents(const Tensor<1, dim>              &n,
+                const std::vector<Tensor<1, dim>> &held);
 
   /**
    * The contact nodes owned by this rank, and the multipliers on them.
@@ -429,13 +454,16 @@ namespace dualcontact
      * scene's contact pairs (contact_pairs.cc): drops the nodes that face
      * no master, and counts them. A hanging slave node is no contact node:
      * its coupling goes to the nodes it hangs on, with the weights of
-     * `hanging_node_constraints`, as its weight m_s does.
+     * `hanging_node_constraints`, as its weight m_s does. A direction in
+     * which `all_constraints` hold a slave node carries no part of the
+     * contact: its normal is turned off it, and a tangent along it is zero.
      */
     void
     couple_pairs(
       const Mapping<dim>              &mapping,
       const DoFHandler<dim>           &dof_handler,
       const AffineConstraints<double> &hanging_node_constraints,
+      const AffineConstraints<double> &all_constraints,
       const Scene<dim>                &scene,
       const std::map<types::global_dof_index, types::boundary_id> &slave_id_of);
 

@@ -21,14 +21,15 @@ namespace dualcontact
   using namespace dealii;
 
   /**
-   * The size of a contact solution: the nodal Euclidean norms of l1 and v,
-   * their largest entries, the norm of the nodal contact forces
-   * m_s (l1_s, l2_s), and the total contact force.
+   * The size of a contact solution: the nodal Euclidean norms of l1, of the
+   * friction thresholds g and of v, the largest entries of l1 and v, the norm
+   * of the nodal contact forces m_s (l1_s, l2_s), and the total contact force.
    */
   struct SolutionSize
   {
     double l1_norm       = 0.;
     double l1_max        = 0.;
+    double g_norm        = 0.;
     double v_norm        = 0.;
     double v_max         = 0.;
     double force_norm    = 0.;

@@ -83,9 +83,10 @@ namespace dualcontact
     // -sum_s m_s (l1_s n_s + T_s l2_s) and its sum_j c_sj shares
     std::array<double, 3> on_slave_body{};
     std::array<double, 3> on_master_body{};
-    double                tangential_force =
-      0.;                     // |sum_s m_s T_s l2_s| in the mean tangent plane
-    double max_pressure = 0.; // max_s l1_s
+    // |sum_s m_s T_s l2_s| in the tangent plane of the obstacle's direction,
+    // plus each pair's in the plane normal to the pair's
+    double tangential_force = 0.;
+    double max_pressure     = 0.; // max_s l1_s
     // the half-width (2D) or radius (3D) of the zone: half the extent of
     // the active nodes (along two lines through its centre in 3D), and the
     // same with the edges extrapolated (contact_zone_shape)

@@ -187,11 +187,15 @@ namespace dualcontact
 
     /**
      * Whether the rigid translation along e is left free by the fixed and
-     * normal-fixed boundaries (only contact could stop it).
+     * normal-fixed boundaries (only contact could stop it): of the whole
+     * mesh, or, with `bodies` (the body of each coarse cell), of body
+     * `body` alone. Collective.
      */
     bool
-    translation_is_free(const Tensor<1, dim>     &e,
-                        const Triangulation<dim> &triangulation) const;
+    translation_is_free(const Tensor<1, dim>            &e,
+                        const Triangulation<dim>        &triangulation,
+                        const std::vector<unsigned int> *bodies = nullptr,
+                        unsigned int                     body   = 0) const;
 
     const Effects &
     effects() const

@@ -355,9 +355,11 @@ namespace dualcontact
          type == GeometryType::quarter_disc ||
          type == GeometryType::two_half_discs) &&
         !(radius > 0.))
-      throw InputError("The entry <Geometry/Radius> must be positive: a " +
-                         to_string(type) + " of radius " + number_text(radius) +
-                         " has no area.",
+      throw InputError("The entry <Geometry/Radius> must be positive: " +
+                         std::string(type == GeometryType::two_half_discs ?
+                                       "the upper half disc" :
+                                       "a " + to_string(type)) +
+                         " of radius " + number_text(radius) + " has no area.",
                        exit_invalid_value);
     if (type == GeometryType::two_half_discs && !(lower_radius > 0.))
       throw InputError("The entry <Geometry/Lower radius> must be positive: a "
