@@ -266,8 +266,15 @@ namespace dualcontact
             n_positive += sign[v] == 1;
             n_negative += sign[v] == -1;
           }
-        if (n_positive + n_negative < kind.n_nodes ||
-            n_positive * n_negative > 0)
+        // A corner where the Jacobian is zero (a straight angle of a
+        // quadrilateral, three edges of a hexahedron in one plane: Gmsh
+        // makes them where a curved boundary meets a plane of symmetry)
+        // leaves the map one-to-one, its Jacobian positive inside, if the
+        // others agree in sign: in 2D the Jacobian is affine in the unit
+        // square's coordinates. Half the corners or more at zero (a quadri-
+        // lateral with an edge of zero length) is no such cell.
+        const unsigned int n_zero = kind.n_nodes - n_positive - n_negative;
+        if (2 * n_zero >= kind.n_nodes || n_positive * n_negative > 0)
           {
             // the nodes of the corners where the sign is s
             const auto at = [&](const int s) {
@@ -283,12 +290,14 @@ namespace dualcontact
                              "has zero area: its nodes are on one line" :
                              "has zero volume: its edges are in one plane at "
                              "every corner");
-            if (n_positive + n_negative < kind.n_nodes)
+            if (n_positive * n_negative == 0)
               throw refuse(element,
-                           "is degenerate at " + nodes_text(at(0)) + ": its " +
-                             (dim == 2 ? "two edges there are in line" :
-                                         "three edges there are in one plane") +
-                             " (its Jacobian there is zero)");
+                           "is degenerate at " + nodes_text(at(0)) +
+                             ": its Jacobian is zero there, at half its "
+                             "corners or more (an edge of zero length, or " +
+                             (dim == 2 ? "two edges in line" :
+                                         "three edges in one plane") +
+                             " at each)");
             // the fewer corners first; of as many, those without the first
             // node
             const int some = n_positive < n_negative ||

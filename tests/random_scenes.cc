@@ -822,10 +822,8 @@ namespace
   // [y0 + h_l, y0 + h_l + h_u] on it with nodes of its own on the cut: each
   // block nx x ny rectangles, each cut into two triangles along one of its
   // diagonals (the same in a block), listed counterclockwise from a random
-  // corner, but a triangle's edge on the cut is never its second one (v1,
-  // v2): on the slave side, the pairing of such edges fails once the mesh
-  // is refined (std::out_of_range, "map::at", from ContactSet::couple_pairs:
-  // exit 1 on 1 rank, a hang on 2). The edges of each side are a curve of
+  // corner, so that a triangle's edge on the cut is any of its three. The
+  // edges of each side are a curve of
   // their own whose physical group is the side's boundary id (as BlockIds
   // numbers them, the sides 0 and 1 on both blocks); the triangles of the
   // lower block are in the physical surface 0, those of the upper block in
@@ -835,7 +833,6 @@ namespace
     double                             x0 = 0, y0 = 0, w = 1, h = 1;
     unsigned int                       nx = 1, ny = 1;
     bool                               other_diagonal = false;
-    bool                               cut_at_top     = false;
     std::array<unsigned int, 4>        ids = {}; // left, right, bottom, top
     unsigned int                       material   = 0;
     unsigned int                       first_node = 1;
@@ -869,19 +866,11 @@ namespace
                 triangles.push_back({{a, c, d}});
               }
           }
-      // each triangle from a random corner; one with an edge on the cut
-      // has it as its first or third edge
-      const unsigned int cut_row = cut_at_top ? ny : 0;
+      // each triangle from a random corner
       for (auto &t : triangles)
         {
-          unsigned int k = 3; // the edge (t[k], t[k + 1]) on the cut
-          for (unsigned int e = 0; e < 3; ++e)
-            if ((t[e] - first_node) / (nx + 1) == cut_row &&
-                (t[(e + 1) % 3] - first_node) / (nx + 1) == cut_row)
-              k = e;
-          const unsigned int shift =
-            k < 3 ? (chance(50) ? k : (k + 1) % 3) : below(3);
-          const std::array<unsigned int, 3> was = t;
+          const unsigned int                shift = below(3);
+          const std::array<unsigned int, 3> was   = t;
           for (unsigned int i = 0; i < 3; ++i)
             t[i] = was[(i + shift) % 3];
         }
@@ -1092,7 +1081,6 @@ namespace
         lower_block.nx             = 2 + below(4);
         lower_block.ny             = 1 + below(2);
         lower_block.other_diagonal = chance(50);
-        lower_block.cut_at_top     = true;
         lower_block.build();
         TriangleBlock upper_block;
         upper_block.x0             = x_upper;

@@ -6,7 +6,9 @@
 // biorthogonal to the slave's own basis,
 //   int psi_s phi_t = delta_st m_s,   m_s = int phi_s,
 // the weighted gap and the slip of slave node s read
-//   n_s . (u_s - sum_j c_sj u_j) + g0_s,   c_sj = M_sj / m_s,
+//   n_s . (u_s - sum_j c_sj u_j) + g0_s,   c_sj = M_sj / m_s
+// (where the master covers the node's support; contact_pairs.cc divides by
+// sum_j M_sj, and takes that as the node's weight, where it covers a part),
 //   M_sj = int_{slave} psi_s phi_j^master,
 // so that the slave block of the coupling is the lumped weight m_s the
 // rigid obstacle already uses, and only the master columns c_sj are new.

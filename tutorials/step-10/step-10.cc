@@ -15,8 +15,11 @@
  *   2. whether both converge under halving, to the same answer, and at
  *      what rate: the pressure of each mesh against the next one's on the
  *      nodes they share. A singular stress at the top corner of the wall
- *      sets that rate, for both elements, and Williams' corner exponent
- *      predicts it.
+ *      sets that rate, 1/2 - a with a the exponent of the corner node:
+ *      where the corner sticks (Q1) it is clamped, and Williams' exponent
+ *      gives 1/2 - a = 0.21; where the corner node slips (P1 on the third
+ *      and fourth meshes) it is not clamped, a is smaller and the rate
+ *      higher (README.md has the measured figures).
  * The scene is step-10.prm; README.md has the introduction and the results.
  */
 

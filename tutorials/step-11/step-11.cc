@@ -5,8 +5,14 @@
  * two_bodies.md) names a slave surface, which carries the contact nodes
  * and their multipliers, and a master surface on the other body. With the
  * dual basis for the multipliers, a slave node's constraint gains the
- * master nodes it faces, with the coefficients c_sj = M_sj / m_s, and
- * nothing else in the method changes. The step asks four questions:
+ * master nodes it faces, with the coefficients c_sj = M_sj / sum_j M_sj,
+ * M_sj / m_s where the master covers the node's support. A node that the
+ * master covers in part (the slave reaching beyond the master's end) has
+ * the covered part sum_j M_sj as its weight, so that l1 stays the
+ * pressure there (the patch test with the slave beyond the master), and
+ * its r and r_t are multiplied by 1 / coverage, a whole node's
+ * augmentation (README.md, "The weighted gap"). Nothing else in the
+ * method changes. The step asks four questions:
  *   1. what the coupling is: m_s and c_sj of two flat surfaces whose
  *      nodes do not match, computed by mortar::couple without a mesh, and
  *      the forces a uniform pressure puts on the master nodes, with the
