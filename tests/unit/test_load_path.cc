@@ -336,7 +336,7 @@ TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz: a cylinder pressed, "
 TEST_CASE("Cattaneo-Mindlin at nu = 0.49 with elements of degree 3: the "
           "stick zone on loading, unloading, reversal and reloading within "
           "one contact element, the tractions within 5 % of F p0 (RMS)",
-          "[path]")
+          "[path][long]")
 {
   // The scene's cylinder with a contact small against it (a/R = 0.008: the
   // half disc's own lateral strain under the clamp stays below the shear of
@@ -437,7 +437,7 @@ TEST_CASE("Cattaneo-Mindlin at nu = 0.49 with elements of degree 3: the "
 
 TEST_CASE("Mindlin-Deresiewicz in 3D: a ball pressed, sheared to Q*, -Q* and "
           "Q* again dissipates the energy of the hysteresis loop",
-          "[path]")
+          "[path][long]")
 {
   const SceneRun<3>               run("mindlin_sphere.prm", "");
   const std::vector<CycleResult> &steps = run.problem->steps();
