@@ -15,12 +15,12 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 cd build
 # On a machine busy with other jobs, a rank that waits for its partner
 # spins in Open MPI's progress loop, and the partner waits for a time slice
-# that the other jobs hold: a 2-rank test took 3 to 4 times as long beside
+# that the other jobs hold: a 2-rank test takes 3 to 4 times as long beside
 # two CPU-bound jobs. Run as root (as CI does), the tests get a higher
 # priority (nice -5), which their processes inherit: beside the same two
-# jobs that test took as long as on a quiet machine (2.8 s against 2.3 s;
-# doc/testing.md). Letting waiting ranks yield (mpi_yield_when_idle) made it
-# slower, not faster (6-17 s, 29-33 s with nice -5).
+# jobs that test takes about as long as on a quiet machine (2.8 s against
+# 2.3 s; doc/testing.md). Letting waiting ranks yield (mpi_yield_when_idle)
+# makes it slower, not faster (6-17 s, 29-33 s with nice -5).
 launcher=()
 if [ "$(id -u)" = 0 ]; then
   launcher=(nice -n -5)

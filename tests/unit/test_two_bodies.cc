@@ -791,7 +791,7 @@ TEST_CASE("A body that only its contact pair could hold, not pressed onto "
                      "nothing holds the body with boundary ids 0, 1"));
     }
   // sliders that hold a block sideways only: pulled off the other block,
-  // it is refused as well (the solve ended with exit 1, v drifting)
+  // it is refused as well (a solve would end with exit 1, v drifting)
   {
     const CaughtError error = catch_input_error([&] {
       const Run run("",
@@ -1282,8 +1282,8 @@ TEST_CASE("Sliders on the sides of two blocks with given or Coulomb "
 {
   // The pair's end nodes lie on the sliders: a friction multiplier along
   // the held tangent would move the master alone, through the few c_sj of
-  // the node's end, a mode so weak that the iteration contracted at 0.98 a
-  // step and stopped after 500 (exit 1).
+  // the node's end, a mode so weak that the iteration would contract at
+  // 0.98 a step and stop after 500 (exit 1).
   const std::string given =
     "subsection Friction\n  set Law = given\n  set Threshold = 0.3\nend\n";
   for (const std::string &friction : {given, coulomb})
@@ -1342,9 +1342,9 @@ TEST_CASE("An upper block reaching beyond the lower one as the slave, in 3D "
           "[pairs]")
 {
   // The corner nodes beyond the lower block's edges are covered by 5e-4 of
-  // their weight: with m_s r alone their gaps converged at 0.87 a step
-  // without friction (129 Uzawa steps) and at 0.98 with it (exit 1 after
-  // 500).
+  // their weight: with m_s r alone their gaps would converge at 0.87 a
+  // step without friction (129 Uzawa steps) and at 0.98 with it (exit 1
+  // after 500).
   for (const std::string law : {"none", "coulomb"})
     {
       const std::string shear =
@@ -1470,8 +1470,8 @@ TEST_CASE("A load path that unloads two bodies to zero: the last step rests "
   CHECK(steps[3].reactions.imbalance < 1e-6);
   // Coulomb friction and a shear, with the predictor, merged and nested:
   // the last step starts from thresholds of round-off size, and its change
-  // of g is measured against the previous step's g too (it stalled at
-  // d(g) 5e-3, exit 1)
+  // of g is measured against the previous step's g too (relative to g
+  // alone it stalls at d(g) 5e-3, exit 1)
   for (const std::string iteration : {"merged", "nested"})
     {
       const Run   path("",
