@@ -578,12 +578,113 @@ end
   }
 
   // @sect3{The whole step}
-  tutorial::Checks
-  run(const Parameters &scene)
+  //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as the four questions of the introduction, one member function per
+  // stage, and members for what a later stage needs of an earlier one (the
+  // runs for the figures' data, the pairs for the cycle, the checks).
+  class TwoBodies
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    const bool         timing = scene.output.print_timing;
+  public:
+    explicit TwoBodies(const Parameters &scene);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene();
+    void
+    couple_flat_surfaces();
+    void
+    carry_uniform_pressure();
+    void
+    run_patch_test();
+    void
+    solve_hertz_pairs();
+    void
+    compare_with_hertz_table();
+    void
+    solve_shear_cycle();
+    void
+    compare_shear_with_masing();
+    void
+    balance_cycle_energy();
+    void
+    write_figure_data() const;
+    tutorial::Checks
+    report_checks() const;
+
+    // The scene, the screen (rank 0 prints) and whether it shows times.
+    const Parameters  &scene;
+    const bool         root;
+    ConditionalOStream pcout;
+    const bool         timing;
+    double             F = 0.; // the friction coefficient
+
+    // The checks, each (holds, what it says): printed at the end.
+    std::vector<std::pair<bool, std::string>> checks;
+
+    // The coupling of two flat surfaces, without a mesh.
+    FlatInterface    interface;
+    unsigned int     n_s = 0, n_m = 0;
+    mortar::Coupling mortar_coupling, nts_coupling;
+
+    // The runs of the patch test and of Hertz, for the figures' data.
+    std::vector<Solved>                 patch;
+    std::vector<CylinderPair>           pairs;
+    std::vector<Solved>                 hertz;
+    std::vector<std::vector<HertzMesh>> hertz_meshes;
+
+    // The shear cycle, Masing's prediction for each of its steps, and what
+    // the pressing left: the contact force, the largest |l2|, the contact
+    // element and p0.
+    Cycle                   cycle;
+    std::vector<Prediction> predicted;
+    unsigned int            first_shear = 1;
+    double                  P_pressed = 0., most_l2 = 0., h = 0.;
+    double                  p0_pressed = 0.;
+    // the largest distances of the shear steps from Masing's rule: the
+    // stick zone's in contact elements, the traction's RMS over F p0
+    double worst_zone = 0., worst_rms = 0.;
+  };
+
+
+  TwoBodies::TwoBodies(const Parameters &scene)
+      : scene(scene)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout, root)
+      , timing(scene.output.print_timing)
+  {}
+
+
+  // The four questions in turn: the coupling without a mesh, the patch
+  // test, Hertz, the shear cycle; then the data for plot.gp and the checks.
+  tutorial::Checks
+  TwoBodies::run()
+  {
+    check_scene();
+    couple_flat_surfaces();
+    carry_uniform_pressure();
+    run_patch_test();
+    solve_hertz_pairs();
+    compare_with_hertz_table();
+    solve_shear_cycle();
+    compare_shear_with_masing();
+    balance_cycle_energy();
+    write_figure_data();
+    return report_checks();
+  }
+
+
+  // @sect4{The scene this step needs}
+  //
+  // The formulas below hold for two half discs in one contact pair with
+  // Coulomb friction, sheared by one clamp along a path of three steps or
+  // more; anything else is refused with one message before a solve.
+  void
+  TwoBodies::check_scene()
+  {
     tutorial::require(
       scene.geometry.dimension == dim &&
         scene.geometry.type == GeometryType::two_half_discs &&
@@ -594,7 +695,6 @@ end
       "step-11 needs the 2D two half discs in one contact pair, Coulomb "
       "friction, one clamp moved by <Boundary conditions/Displacements> and "
       "a load path of three steps or more.");
-    double F = 0.;
     try
       {
         F = std::stod(scene.friction.parameter);
@@ -610,22 +710,25 @@ end
     pcout << "step-11: two elastic bodies, the dual mortar ("
           << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
           << " MPI rank(s))\n\n";
-    // The checks, each (holds, what it says): printed at the end.
-    std::vector<std::pair<bool, std::string>> checks;
+  }
 
-    // @sect4{The coupling of two flat surfaces}
-    //
-    // 7 slave segments over 10 master segments on [0, 2]. First the dual
-    // basis against the slave's own: the slave surface coupled with a
-    // copy of itself, facing it, has M_st = int psi_s phi_t, which must be
-    // delta_st m_s. Then the slave against the master: each slave node's
-    // m_s and c_sj, and two sums that say what the c_sj do to a field
-    // that is linear along the interface, v(x) = alpha + beta x: sum_j
-    // c_sj v(x_j) = v(x_s) needs sum_j c_sj = 1 and sum_j c_sj x_j = x_s.
-    const FlatInterface interface       = flat_interface(7, 10, 2., 1.);
-    const unsigned int  n_s             = interface.x_slave.size();
-    const unsigned int  n_m             = interface.x_master.size();
-    double              biorthogonality = 0., largest_m = 0.;
+
+  // @sect4{The coupling of two flat surfaces}
+  //
+  // 7 slave segments over 10 master segments on [0, 2]. First the dual
+  // basis against the slave's own: the slave surface coupled with a
+  // copy of itself, facing it, has M_st = int psi_s phi_t, which must be
+  // delta_st m_s. Then the slave against the master: each slave node's
+  // m_s and c_sj, and two sums that say what the c_sj do to a field
+  // that is linear along the interface, v(x) = alpha + beta x: sum_j
+  // c_sj v(x_j) = v(x_s) needs sum_j c_sj = 1 and sum_j c_sj x_j = x_s.
+  void
+  TwoBodies::couple_flat_surfaces()
+  {
+    interface              = flat_interface(7, 10, 2., 1.);
+    n_s                    = interface.x_slave.size();
+    n_m                    = interface.x_master.size();
+    double biorthogonality = 0., largest_m = 0.;
     {
       std::vector<mortar::Segment> mirror = interface.slave;
       for (mortar::Segment &s : mirror)
@@ -642,9 +745,8 @@ end
         }
       biorthogonality /= largest_m;
     }
-    const mortar::Coupling mortar_coupling =
-      mortar::couple(interface.slave, n_s, interface.master);
-    const mortar::Coupling nts_coupling =
+    mortar_coupling = mortar::couple(interface.slave, n_s, interface.master);
+    nts_coupling =
       mortar::couple_node_to_segment(interface.slave, n_s, interface.master);
 
     pcout << "The coupling of 7 slave segments over 10 master segments on "
@@ -691,10 +793,26 @@ end
           << format("%.1e", linear_error[0]) << ", node to segment "
           << format("%.1e", linear_error[1]) << "\n";
 
-    // The forces of the uniform pressure p = 1 on the master nodes, against
-    // the consistent load int p phi_j. Both couplings hand on the whole
-    // force, p times the width 2; only the dual mortar hands it on as the
-    // consistent load.
+    checks.emplace_back(biorthogonality <= 1e-14,
+                        "the dual basis is biorthogonal to the slave's own, "
+                        "int psi_s phi_t = delta_st m_s (to " +
+                          format("%.0e", biorthogonality) + " <= 1e-14)");
+    checks.emplace_back(linear_error[0] <= 1e-14 && linear_error[1] <= 1e-14,
+                        "both couplings see a linear field exactly: sum_j "
+                        "c_sj v(x_j) = v(x_s) (to 1e-14)");
+    checks.emplace_back(negative,
+                        "some c_sj of the dual mortar are negative (psi_s "
+                        "changes sign on its segments)");
+  }
+
+
+  // The forces of the uniform pressure p = 1 on the master nodes, against
+  // the consistent load int p phi_j. Both couplings hand on the whole
+  // force, p times the width 2; only the dual mortar hands it on as the
+  // consistent load.
+  void
+  TwoBodies::carry_uniform_pressure()
+  {
     const std::vector<double> consistent =
       consistent_forces(interface, patch_pressure);
     const std::vector<double> forces[2] = {
@@ -733,16 +851,6 @@ end
           csv << interface.x_master[j] << ',' << consistent[j] << ','
               << forces[0][j] << ',' << forces[1][j] << '\n';
       }
-    checks.emplace_back(biorthogonality <= 1e-14,
-                        "the dual basis is biorthogonal to the slave's own, "
-                        "int psi_s phi_t = delta_st m_s (to " +
-                          format("%.0e", biorthogonality) + " <= 1e-14)");
-    checks.emplace_back(linear_error[0] <= 1e-14 && linear_error[1] <= 1e-14,
-                        "both couplings see a linear field exactly: sum_j "
-                        "c_sj v(x_j) = v(x_s) (to 1e-14)");
-    checks.emplace_back(negative,
-                        "some c_sj of the dual mortar are negative (psi_s "
-                        "changes sign on its segments)");
     checks.emplace_back(force_error[0] <= 1e-14 && force_error[1] >= 0.01 &&
                           std::abs(total[1] - total[0]) <= 1e-14 * total[0] &&
                           std::abs(total[2] - total[0]) <= 1e-14 * total[0],
@@ -751,20 +859,24 @@ end
                         "node to segment (off by " +
                           format("%.0f", 100. * force_error[1]) +
                           " % >= 1 %); both carry the whole force");
+  }
 
-    // @sect4{The patch test}
-    //
-    // The same interface in two blocks, solved with each coupling on two
-    // meshes: the largest |l1 - p| over the slave nodes, the relative L2
-    // errors of the pressure and of the displacement (against the exact
-    // solution of the scene), the contact force, and the forces on the two
-    // bodies against each other.
-    const std::vector<Solved> patch = {
-      solve(patch_parameters(""), scene, "patch_dual_mortar"),
-      solve(patch_parameters("subsection Boundary conditions\n  set Pair "
-                             "coupling = node to segment\nend\n"),
-            scene,
-            "patch_node_to_segment")};
+
+  // @sect4{The patch test}
+  //
+  // The same interface in two blocks, solved with each coupling on two
+  // meshes: the largest |l1 - p| over the slave nodes, the relative L2
+  // errors of the pressure and of the displacement (against the exact
+  // solution of the scene), the contact force, and the forces on the two
+  // bodies against each other.
+  void
+  TwoBodies::run_patch_test()
+  {
+    patch = {solve(patch_parameters(""), scene, "patch_dual_mortar"),
+             solve(patch_parameters("subsection Boundary conditions\n  set "
+                                    "Pair coupling = node to segment\nend\n"),
+                   scene,
+                   "patch_node_to_segment")};
     const std::string coupling_name[2] = {"dual mortar", "node to segment"};
     pcout << "The patch test: two blocks, 7 over 10 cells, then 14 over 20; "
              "p = 1, the exact displacement linear"
@@ -826,12 +938,17 @@ end
                         "patch test, both couplings: the contact force is "
                         "the load p times the width 2, the bodies' forces "
                         "equal and opposite (to 1e-10)");
+  }
 
-    // @sect4{Hertz: two cylinders}
-    //
-    // The scene's two cylinders, and the pair with E2 = 3 E1 and R2 = 2 R1
-    // (the lower body stiffer and flatter), each pressed so that a = R1/10,
-    // on two meshes.
+
+  // @sect4{Hertz: two cylinders}
+  //
+  // The scene's two cylinders, and the pair with E2 = 3 E1 and R2 = 2 R1
+  // (the lower body stiffer and flatter), each pressed so that a = R1/10,
+  // on two meshes. This stage solves both pairs and lists their constants.
+  void
+  TwoBodies::solve_hertz_pairs()
+  {
     const MaterialParameters upper = scene.material.of(1);
     const MaterialParameters lower = scene.material.of(0);
     CylinderPair             scene_pair{"identical",
@@ -844,14 +961,13 @@ end
     if (scene_pair.E1 != scene_pair.E2 || scene_pair.nu1 != scene_pair.nu2 ||
         scene_pair.R1 != scene_pair.R2)
       scene_pair.name = "the scene's pair";
-    CylinderPair dissimilar               = scene_pair;
-    dissimilar.name                       = "E2 = 3 E1, R2 = 2 R1";
-    dissimilar.E2                         = 3. * scene_pair.E1;
-    dissimilar.nu2                        = scene_pair.nu1;
-    dissimilar.R2                         = 2. * scene_pair.R1;
-    const std::vector<CylinderPair> pairs = {scene_pair, dissimilar};
-    std::vector<Solved>             hertz;
-    double                          hertz_time = 0.;
+    CylinderPair dissimilar = scene_pair;
+    dissimilar.name         = "E2 = 3 E1, R2 = 2 R1";
+    dissimilar.E2           = 3. * scene_pair.E1;
+    dissimilar.nu2          = scene_pair.nu1;
+    dissimilar.R2           = 2. * scene_pair.R1;
+    pairs                   = {scene_pair, dissimilar};
+    double hertz_time       = 0.;
     for (unsigned int k = 0; k < pairs.size(); ++k)
       {
         hertz.push_back(
@@ -875,10 +991,19 @@ end
               << format("%12.4f", pair.E_star())
               << format("%11.6f", pair.R_star()) << "\n";
       }
+  }
+
+
+  // Each mesh of each pair against Hertz's a and p0 (compare_with_hertz),
+  // one row per mesh; the checks look at the last mesh, at the error's fall
+  // under halving, and at the forces.
+  void
+  TwoBodies::compare_with_hertz_table()
+  {
     pcout << "  pair                  cycle   DoFs  nodes  facing none        "
              "P       a       p0     h_C    peak   a_m - a  (h_C)   p L2 "
              "error\n";
-    std::vector<std::vector<HertzMesh>> hertz_meshes(pairs.size());
+    hertz_meshes.resize(pairs.size());
     for (unsigned int k = 0; k < pairs.size(); ++k)
       for (unsigned int c = 0; c < hertz[k].cycles.size(); ++c)
         {
@@ -933,13 +1058,19 @@ end
                               "the bodies' forces equal and opposite (to "
                               "1e-10)");
       }
+  }
 
-    // @sect4{Cattaneo, Mindlin and Deresiewicz between the cylinders}
-    //
-    // The scene as step-11.prm gives it: pressed by the clamp, then sheared
-    // back and forth. Its turning points are the steps at +Q* and -Q*; the
-    // cycle runs from the first to the third.
-    Cycle cycle;
+
+  // @sect4{Cattaneo, Mindlin and Deresiewicz between the cylinders}
+  //
+  // The scene as step-11.prm gives it: pressed by the clamp, then sheared
+  // back and forth. Its turning points are the steps at +Q* and -Q*; the
+  // cycle runs from the first to the third. This stage solves it, predicts
+  // each step by Masing's rule for the scene's pair, and reports the state
+  // the pressing left.
+  void
+  TwoBodies::solve_shear_cycle()
+  {
     cycle.run   = solve(scene, scene, "cycle");
     cycle.clamp = scene.boundary.displacements.begin()->first;
     cycle.turns = turning_points(cycle);
@@ -950,23 +1081,19 @@ end
       cycle.run.steps[cycle.turns[0]].reactions.on_id.at(cycle.clamp)[0] >= 0. ?
         1. :
         -1.;
-    const std::vector<unsigned int> &turns = cycle.turns;
-    const CylinderPair              &pair  = pairs[0];
-    const std::vector<Prediction>    predicted =
-      mindlin_deresiewicz(cycle, pair, F);
+    const CylinderPair &pair = pairs[0];
+    predicted                = mindlin_deresiewicz(cycle, pair, F);
 
     // The first step that shears, and the state the pressing left.
-    unsigned int first_shear = 1;
     while (first_shear < cycle.run.steps.size() &&
            cycle.delta(first_shear) == cycle.delta(first_shear - 1))
       ++first_shear;
-    const double                 P_pressed = cycle.P(0);
-    double                       most_l2   = 0.;
+    P_pressed                            = cycle.P(0);
     const std::vector<SlaveNode> pressed = read_slave(step_file(cycle.run, 0));
     for (const SlaveNode &n : pressed)
       most_l2 = std::max(most_l2, std::abs(n.l2));
-    const double h          = contact_element(pressed, pair.a(P_pressed));
-    const double p0_pressed = pair.p0(P_pressed);
+    h          = contact_element(pressed, pair.a(P_pressed));
+    p0_pressed = pair.p0(P_pressed);
     pcout << "Cattaneo, Mindlin and Deresiewicz between the cylinders: "
              "Coulomb F = "
           << F << ", " << cycle.run.cycles.back().mesh.n_dofs << " DoFs, "
@@ -979,16 +1106,20 @@ end
           << cycle.run.steps[0].solve.n_stick << " stick, "
           << cycle.run.steps[0].solve.n_slip << " slip, max |l2| / (F p0) = "
           << format("%.1e", most_l2 / (F * p0_pressed)) << "\n";
+  }
 
-    // One row per step of the shear: the clamp's delta, Q/(F P), the stick
-    // and slip nodes, the stick half-width (half the extent of the sticking
-    // nodes) against Masing's rule, in contact elements, and the RMS of the
-    // traction's difference from the rule's over |x| < a, weighted with the
-    // m_s, relative to F p0.
+
+  // One row per step of the shear: the clamp's delta, Q/(F P), the stick
+  // and slip nodes, the stick half-width (half the extent of the sticking
+  // nodes) against Masing's rule, in contact elements, and the RMS of the
+  // traction's difference from the rule's over |x| < a, weighted with the
+  // m_s, relative to F p0.
+  void
+  TwoBodies::compare_shear_with_masing()
+  {
     const std::string branch_name[3] = {"loading", "unloading", "reloading"};
     pcout << "  step      t     delta  branch     Q/(F P)  stick  slip  "
              "stick c   formula  (c - c_f)/h_C  RMS(q - q_f)/(F p0)\n";
-    double worst_zone = 0., worst_rms = 0., P_change = 0.;
     for (unsigned int n = first_shear; n < cycle.run.steps.size(); ++n)
       {
         const CycleResult           &r = cycle.run.steps[n];
@@ -1019,14 +1150,24 @@ end
               << format("%10.5f", p.c) << format("%+15.2f", off)
               << format("%19.2f %%", 100. * rms) << "\n";
       }
+  }
+
+
+  // The energy of the cycle Q* -> -Q* -> Q*, from the first turning point
+  // to the third: as friction dissipated it (the sum of sum_s m_s l2_s .
+  // (slip of the step) over its steps, records.h), as the clamp's work
+  // (the loop's area), and W_2D for the P and Q* of the first turning
+  // point. With it the contact force along the cycle, and the checks of
+  // Cattaneo's part.
+  void
+  TwoBodies::balance_cycle_energy()
+  {
+    const std::vector<unsigned int> &turns    = cycle.turns;
+    const CylinderPair              &pair     = pairs[0];
+    double                           P_change = 0.;
     for (unsigned int n = 0; n < cycle.run.steps.size(); ++n)
       P_change = std::max(P_change, std::abs(cycle.P(n) / P_pressed - 1.));
 
-    // The energy of the cycle Q* -> -Q* -> Q*, from the first turning point
-    // to the third: as friction dissipated it (the sum of sum_s m_s l2_s .
-    // (slip of the step) over its steps, records.h), as the clamp's work
-    // (the loop's area), and W_2D for the P and Q* of the first turning
-    // point.
     const unsigned int t0 = turns[0], t2 = turns[2];
     const double       dissipated = cycle.run.steps[t2].step.dissipation_total -
                               cycle.run.steps[t0].step.dissipation_total;
@@ -1064,16 +1205,22 @@ end
                           std::abs(dissipated / W_2D - 1.) <= 0.05,
                         "Cattaneo: the cycle dissipates the clamp's work (to "
                         "2 %) and W_2D (to 5 %)");
+  }
 
-    // @sect4{The figures' data}
-    //
-    // plot.gp reads the library's CSV files and output/figures.gp: the
-    // files of the runs (patchKC: coupling K, mesh C; the master forces
-    // above), Hertz's a and p0 of each pair on its last mesh,
-    // and for three states of the cycle (+Q*, the step nearest Q = 0 after
-    // it, -Q*) the file, a, p0, Q/(F P) and the predicted traction in units
-    // of F p0 along u = x/a, written with qd(u, d/a) of plot.gp.
-    unsigned int unloaded = turns[0];
+
+  // @sect4{The figures' data}
+  //
+  // plot.gp reads the library's CSV files and output/figures.gp: the
+  // files of the runs (patchKC: coupling K, mesh C; the master forces
+  // above), Hertz's a and p0 of each pair on its last mesh,
+  // and for three states of the cycle (+Q*, the step nearest Q = 0 after
+  // it, -Q*) the file, a, p0, Q/(F P) and the predicted traction in units
+  // of F p0 along u = x/a, written with qd(u, d/a) of plot.gp.
+  void
+  TwoBodies::write_figure_data() const
+  {
+    const std::vector<unsigned int> &turns    = cycle.turns;
+    unsigned int                     unloaded = turns[0];
     for (unsigned int n = turns[0]; n <= turns[1]; ++n)
       if (std::abs(cycle.Q(n)) < std::abs(cycle.Q(unloaded)))
         unloaded = n;
@@ -1107,16 +1254,29 @@ end
             gp << "\n";
           }
       }
+  }
 
-    // @sect4{The checks}
-    //
-    // What the README claims, on the step's own numbers; the README's table
-    // "The checks" gives each bound's reason.
+
+  // @sect4{The checks}
+  //
+  // What the README claims, on the step's own numbers; the README's table
+  // "The checks" gives each bound's reason.
+  tutorial::Checks
+  TwoBodies::report_checks() const
+  {
     pcout << "\nChecks:\n";
     tutorial::Checks result;
     for (const auto &[ok, what] : checks)
       result(ok, what);
     return result;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &scene)
+  {
+    return TwoBodies(scene).run();
   }
 } // namespace Step11
 
