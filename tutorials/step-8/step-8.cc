@@ -245,11 +245,117 @@ namespace Step8
   }
 
   // @sect3{The whole step}
-  tutorial::Checks
-  run(const Parameters &scene)
+  //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as the stages below, one member function each, and members for what a
+  // later stage needs of an earlier one (the cycle and its turning points,
+  // the variants, the figures the checks judge).
+  class LoadPaths
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream                    pcout(std::cout, root);
+  public:
+    explicit LoadPaths(const Parameters &scene);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene();
+    void
+    solve_cycle();
+    void
+    solve_variants();
+    void
+    compare_variants();
+    double
+    print_variant_row(const std::string &label,
+                      const Path        &path,
+                      const unsigned int last,
+                      const bool         in_proportion) const;
+    void
+    print_proportional_steps() const;
+    void
+    print_cycle_steps();
+    void
+    measure_cycle_energy();
+    void
+    print_step_costs();
+    void
+    print_later_steps();
+    void
+    write_figure_data() const;
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints) and whether it shows times.
+    const Parameters  &scene;
+    const bool         root;
+    ConditionalOStream pcout;
+    const bool         timing;
+    types::boundary_id clamp = 0;
+    double             F     = 0.; // the friction coefficient
+
+    // The cycle: its clamp expression, its steps, turning points and
+    // Mindlin and Deresiewicz's prediction per step; the step where the
+    // variants end (its time t_v), the first step that shears, and the
+    // contact element h_C.
+    std::string               cycle_expression;
+    Path                      cycle;
+    std::vector<unsigned int> turns;
+    std::vector<Prediction>   predicted;
+    unsigned int              variant_step = 0;
+    double                    t_v          = 0.;
+    unsigned int              first_shear  = 1;
+    double                    h            = 0.;
+
+    // The three other paths to the cycle's position at t_v, and what the
+    // checks judge: the stick zones' distances from Cattaneo's (a, b, d)
+    // and from Mindlin and Deresiewicz's, the last cycle's energy, the CG
+    // iterations of one linear solve, the most Newton steps of a later step.
+    std::vector<Path>   variants;
+    std::vector<double> off_variant;
+    double              worst_cycle = 0.;
+    double              dissipated = 0., area_1 = 0., area_2 = 0.;
+    double              reference_cg = 0.;
+    unsigned int        most_newton  = 0;
+  };
+
+
+  LoadPaths::LoadPaths(const Parameters &scene)
+      : scene(scene)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout, root)
+      , timing(scene.output.print_timing)
+  {}
+
+
+  // The cycle first; then the other paths to one of its states and the
+  // table that compares them; the cycle step by step, its energy and its
+  // cost; the data for plot.gp and the checks.
+  tutorial::Checks
+  LoadPaths::run()
+  {
+    check_scene();
+    solve_cycle();
+    solve_variants();
+    compare_variants();
+    print_cycle_steps();
+    measure_cycle_energy();
+    print_step_costs();
+    print_later_steps();
+    write_figure_data();
+    return check_results();
+  }
+
+
+  // @sect4{The scene this step needs}
+  //
+  // The 2D half disc with Coulomb friction and one clamped boundary part,
+  // whose displacement makes the path; anything else is refused with one
+  // message before a solve.
+  void
+  LoadPaths::check_scene()
+  {
     const std::vector<types::boundary_id> clamps =
       scene.boundary.ids_with(BoundaryCondition::fixed);
     tutorial::require(scene.geometry.dimension == dim &&
@@ -258,36 +364,38 @@ namespace Step8
                       "step-8 needs the 2D half disc with Coulomb friction "
                       "and one clamped boundary part (<Boundary "
                       "conditions/Conditions>).");
-    const types::boundary_id clamp  = clamps[0];
-    const bool               timing = scene.output.print_timing;
-    const double             F      = std::stod(scene.friction.parameter);
+    clamp = clamps[0];
+    F     = std::stod(scene.friction.parameter);
     if (root)
       std::filesystem::create_directories(scene.output.directory);
 
     pcout << "step-8: load paths and friction history ("
           << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
           << " MPI rank(s))\n\n";
+  }
 
-    // @sect4{The cycle}
-    //
-    // The scene as step-8.prm gives it: pressed, then sheared back and
-    // forth between +Q* and -Q*. Its turning points are the steps at +Q*
-    // and -Q*; a cycle runs from one turning point to the one two later.
-    const std::string cycle_expression = scene.boundary.displacements.at(clamp);
-    const Path        cycle            = solve_path(
+
+  // @sect4{The cycle}
+  //
+  // The scene as step-8.prm gives it: pressed, then sheared back and
+  // forth between +Q* and -Q*. Its turning points are the steps at +Q*
+  // and -Q*; a cycle runs from one turning point to the one two later.
+  void
+  LoadPaths::solve_cycle()
+  {
+    cycle_expression = scene.boundary.displacements.at(clamp);
+    cycle            = solve_path(
       scene, clamp, "cycle", cycle_expression, scene.load_path.step_times());
-    const std::vector<unsigned int> turns = turning_points(cycle, clamp);
+    turns = turning_points(cycle, clamp);
     tutorial::require(turns.size() >= 3,
                       "step-8 needs a path that shears the clamp to one "
                       "side, back to the other and to the first again "
                       "(<Boundary conditions/Displacements>, <Load "
                       "path/Times>).");
-    const std::vector<Prediction> predicted =
-      mindlin_deresiewicz(cycle, scene, clamp, F);
+    predicted = mindlin_deresiewicz(cycle, scene, clamp, F);
 
     // The variants end where the cycle's first shear has |Q|/(F P) nearest
     // 1/2: at that step's time t_v (|Q|: the shear may go toward -x).
-    unsigned int variant_step = 0;
     for (unsigned int n = 0; n <= turns[0]; ++n)
       {
         const CycleResult &r = cycle.steps[n];
@@ -296,22 +404,26 @@ namespace Step8
             std::abs(std::abs(Q_of(v, clamp)) / (F * P_of(v)) - 0.5))
           variant_step = n;
       }
-    const double t_v = cycle.steps[variant_step].step.time;
+    t_v = cycle.steps[variant_step].step.time;
     // the first step that shears
-    unsigned int first_shear = 1;
     while (first_shear < cycle.steps.size() &&
            delta_of(cycle.steps[first_shear], clamp) ==
              delta_of(cycle.steps[first_shear - 1], clamp))
       ++first_shear;
+  }
 
-    // @sect4{Path dependence}
-    //
-    // Three more paths to the cycle's clamp position at t_v, (X, Y):
-    //   (a) at once: one step, the static problem;
-    //   (b) normal first: pressed by Y at t = 1 (no shear), then sheared by
-    //       X in one step at t = 2;
-    //   (c) in proportion: (X, Y) t at t = 0.001, 0.1, 0.2, ..., 1.
-    // The cycle itself is a fourth: pressed first, then sheared gradually.
+
+  // @sect4{Path dependence}
+  //
+  // Three more paths to the cycle's clamp position at t_v, (X, Y):
+  //   (a) at once: one step, the static problem;
+  //   (b) normal first: pressed by Y at t = 1 (no shear), then sheared by
+  //       X in one step at t = 2;
+  //   (c) in proportion: (X, Y) t at t = 0.001, 0.1, 0.2, ..., 1.
+  // The cycle itself is a fourth: pressed first, then sheared gradually.
+  void
+  LoadPaths::solve_variants()
+  {
     const std::vector<std::string> XY = clamp_at(cycle_expression, t_v);
     const std::string             &X = XY[0], &Y = XY[1];
     std::vector<double>            proportional_times = {0.001};
@@ -320,7 +432,6 @@ namespace Step8
     // (only the cycle's cost is compared with a linear solve)
     Parameters variant_scene                  = scene;
     variant_scene.solver.time_reference_solve = false;
-    std::vector<Path> variants;
     variants.push_back(
       solve_path(variant_scene, clamp, "at_once", X + "; " + Y, {1.}));
     variants.push_back(solve_path(variant_scene,
@@ -333,45 +444,55 @@ namespace Step8
                                   "proportional",
                                   X + " * t; " + Y + " * t",
                                   proportional_times));
-    const double h = cycle.h_contact;
+    h = cycle.h_contact;
+  }
 
-    // The table: per path its final P and Q/(F P), the nodes in stick and
-    // slip, the contact zone's half-width (edges extrapolated) and the stick
-    // zone's (half the extent of the sticking nodes) over Hertz's a for the
-    // measured P, the predicted c/a and the difference in contact elements
-    // h_C, the energy dissipated along the path, and the most nodes that
-    // slipped in a step after the first. The prediction for beta = 0 is
-    // Cattaneo's after the normal load or at once, and no slip (c = a) in
-    // proportion.
-    const auto variant_row = [&](const std::string &label,
-                                 const Path        &path,
-                                 const unsigned int last,
-                                 const bool         in_proportion) {
-      const CycleResult    &r = path.steps[last];
-      const double          P = P_of(r), Q = Q_of(r, clamp);
-      const tutorial::Hertz hertz(scene, P);
-      const double          c_predicted =
-        in_proportion ?
-                   hertz.a :
-                   hertz.a * std::sqrt(std::max(0., 1. - std::abs(Q) / (F * P)));
-      unsigned int later_slip = 0;
-      for (unsigned int n = 1; n <= last; ++n)
-        later_slip =
-          std::max<unsigned int>(later_slip, path.steps[n].solve.n_slip);
-      pcout << label << format("%6.0f", last + 1.) << format("%9.5f", P)
-            << format("%9.3f", Q / (F * P))
-            << format("%7.0f", double(r.solve.n_stick))
-            << format("%6.0f", double(r.solve.n_slip))
-            << format("%7.3f", r.zone.edge_half_width / hertz.a)
-            << format("%7.3f", r.zone.stick_half_width / hertz.a)
-            << format("%8.3f", c_predicted / hertz.a)
-            << format("%+11.2f", (r.zone.stick_half_width - c_predicted) / h)
-            << format("%12.3e", r.step.dissipation_total)
-            << (last > 0 ? format("%8.0f", double(later_slip)) :
-                           std::string("       -"))
-            << "\n";
-      return (r.zone.stick_half_width - c_predicted) / h;
-    };
+
+  // The table: per path its final P and Q/(F P), the nodes in stick and
+  // slip, the contact zone's half-width (edges extrapolated) and the stick
+  // zone's (half the extent of the sticking nodes) over Hertz's a for the
+  // measured P, the predicted c/a and the difference in contact elements
+  // h_C, the energy dissipated along the path, and the most nodes that
+  // slipped in a step after the first. The prediction for beta = 0 is
+  // Cattaneo's after the normal load or at once, and no slip (c = a) in
+  // proportion. A row returns its stick zone's difference in h_C.
+  double
+  LoadPaths::print_variant_row(const std::string &label,
+                               const Path        &path,
+                               const unsigned int last,
+                               const bool         in_proportion) const
+  {
+    const CycleResult    &r = path.steps[last];
+    const double          P = P_of(r), Q = Q_of(r, clamp);
+    const tutorial::Hertz hertz(scene, P);
+    const double          c_predicted =
+      in_proportion ?
+                 hertz.a :
+                 hertz.a * std::sqrt(std::max(0., 1. - std::abs(Q) / (F * P)));
+    unsigned int later_slip = 0;
+    for (unsigned int n = 1; n <= last; ++n)
+      later_slip =
+        std::max<unsigned int>(later_slip, path.steps[n].solve.n_slip);
+    pcout << label << format("%6.0f", last + 1.) << format("%9.5f", P)
+          << format("%9.3f", Q / (F * P))
+          << format("%7.0f", double(r.solve.n_stick))
+          << format("%6.0f", double(r.solve.n_slip))
+          << format("%7.3f", r.zone.edge_half_width / hertz.a)
+          << format("%7.3f", r.zone.stick_half_width / hertz.a)
+          << format("%8.3f", c_predicted / hertz.a)
+          << format("%+11.2f", (r.zone.stick_half_width - c_predicted) / h)
+          << format("%12.3e", r.step.dissipation_total)
+          << (last > 0 ? format("%8.0f", double(later_slip)) :
+                         std::string("       -"))
+          << "\n";
+    return (r.zone.stick_half_width - c_predicted) / h;
+  }
+
+
+  // The four paths side by side, (d) being the cycle up to t_v.
+  void
+  LoadPaths::compare_variants()
+  {
     const CycleResult &at_v = cycle.steps[variant_step];
     pcout << "Path dependence: four paths to the clamp position ("
           << format("%.6g", delta_of(at_v, clamp)) << ", "
@@ -380,61 +501,69 @@ namespace Step8
           << "  path                          steps        P  Q/(F P)  stick  "
              "slip  a_m/a    c/a  predicted  (c - c_p)/h_C  dissipated  later "
              "slip\n";
-    std::vector<double> off_variant;
-    off_variant.push_back(
-      variant_row("  (a) at once                 ", variants[0], 0, false));
+    off_variant.push_back(print_variant_row(
+      "  (a) at once                 ", variants[0], 0, false));
     // (b)'s last step (its second, or the last sub-step of a shear that
     // adaptive step control cut)
-    off_variant.push_back(variant_row("  (b) normal first, then shear",
-                                      variants[1],
-                                      variants[1].steps.size() - 1,
-                                      false));
-    variant_row("  (c) in proportion           ",
-                variants[2],
-                variants[2].steps.size() - 1,
-                true);
+    off_variant.push_back(print_variant_row("  (b) normal first, then shear",
+                                            variants[1],
+                                            variants[1].steps.size() - 1,
+                                            false));
+    print_variant_row("  (c) in proportion           ",
+                      variants[2],
+                      variants[2].steps.size() - 1,
+                      true);
     std::string shear_in_steps =
       "  (d) as (b), shear in " +
       std::to_string(variant_step - first_shear + 1) + " steps";
     shear_in_steps.resize(30, ' ');
     off_variant.push_back(
-      variant_row(shear_in_steps, cycle, variant_step, false));
-    // (c) step by step: the slip nodes, Q/(F P) and the ratio of the
-    // increments (the clamp prescribes displacements, not forces, and
-    // Q/P is not quite fixed), and for comparison the slip nodes of the
-    // cycle's steps that only press
-    {
-      const Path &c = variants[2];
-      pcout << "  (c) step by step:       t";
-      // (a space before each: the sub-steps of adaptive step control have
-      // times of more digits)
-      for (const CycleResult &r : c.steps)
-        pcout << format(" %6.4g", r.step.time);
-      pcout << "\n                 slip nodes";
-      for (const CycleResult &r : c.steps)
-        pcout << format("%7.0f", double(r.solve.n_slip));
-      pcout << "\n                    Q/(F P)";
-      for (const CycleResult &r : c.steps)
-        pcout << format("%7.3f", Q_of(r, clamp) / (F * P_of(r)));
-      pcout << "\n                dQ/(F dP)      -";
-      for (unsigned int n = 1; n < c.steps.size(); ++n)
-        pcout << format("%7.3f",
-                        (Q_of(c.steps[n], clamp) -
-                         Q_of(c.steps[n - 1], clamp)) /
-                          (F * (P_of(c.steps[n]) - P_of(c.steps[n - 1]))));
-      pcout << "\n  the cycle's steps that only press: slip nodes";
-      for (unsigned int n = 0; n < first_shear; ++n)
-        pcout << " " << cycle.steps[n].solve.n_slip;
-      pcout << "; contact element h_C = " << format("%.6f", h) << "\n\n";
-    }
+      print_variant_row(shear_in_steps, cycle, variant_step, false));
+    print_proportional_steps();
+  }
 
-    // @sect4{The cycle, step by step}
-    //
-    // Every other step of the shear up to the third turning point, counted
-    // from the first so that the turning points are among them, and the
-    // later turning points: Q/(F P), the nodes in stick and slip, the stick
-    // half-width against Mindlin and Deresiewicz, the energy dissipated in
-    // the step.
+
+  // (c) step by step: the slip nodes, Q/(F P) and the ratio of the
+  // increments (the clamp prescribes displacements, not forces, and
+  // Q/P is not quite fixed), and for comparison the slip nodes of the
+  // cycle's steps that only press
+  void
+  LoadPaths::print_proportional_steps() const
+  {
+    const Path &c = variants[2];
+    pcout << "  (c) step by step:       t";
+    // (a space before each: the sub-steps of adaptive step control have
+    // times of more digits)
+    for (const CycleResult &r : c.steps)
+      pcout << format(" %6.4g", r.step.time);
+    pcout << "\n                 slip nodes";
+    for (const CycleResult &r : c.steps)
+      pcout << format("%7.0f", double(r.solve.n_slip));
+    pcout << "\n                    Q/(F P)";
+    for (const CycleResult &r : c.steps)
+      pcout << format("%7.3f", Q_of(r, clamp) / (F * P_of(r)));
+    pcout << "\n                dQ/(F dP)      -";
+    for (unsigned int n = 1; n < c.steps.size(); ++n)
+      pcout << format("%7.3f",
+                      (Q_of(c.steps[n], clamp) - Q_of(c.steps[n - 1], clamp)) /
+                        (F * (P_of(c.steps[n]) - P_of(c.steps[n - 1]))));
+    pcout << "\n  the cycle's steps that only press: slip nodes";
+    for (unsigned int n = 0; n < first_shear; ++n)
+      pcout << " " << cycle.steps[n].solve.n_slip;
+    pcout << "; contact element h_C = " << format("%.6f", h) << "\n\n";
+  }
+
+
+  // @sect4{The cycle, step by step}
+  //
+  // Every other step of the shear up to the third turning point, counted
+  // from the first so that the turning points are among them, and the
+  // later turning points: Q/(F P), the nodes in stick and slip, the stick
+  // half-width against Mindlin and Deresiewicz, the energy dissipated in
+  // the step.
+  void
+  LoadPaths::print_cycle_steps()
+  {
     const CycleResult &peak = cycle.steps[turns[0]];
     pcout << "The cycle: pressed to P = " << format("%.5f", P_of(peak))
           << ", sheared to Q*/(F P) = "
@@ -445,7 +574,6 @@ namespace Step8
     pcout << "\n"
           << "       t      delta  Q/(F P)  stick  slip    c/a  Mindlin-D.  "
              "(c - c_MD)/h_C  dissipated\n";
-    double worst_cycle = 0.;
     for (unsigned int n = first_shear; n < cycle.steps.size(); ++n)
       {
         const CycleResult &r   = cycle.steps[n];
@@ -465,16 +593,20 @@ namespace Step8
               << format("%12.3f", p.c / p.a) << format("%+16.2f", off)
               << format("%12.3e", r.step.dissipation) << "\n";
       }
+  }
 
-    // The energy of each cycle, from a turning point to the one two
-    // later (+Q* to -Q* and back): as friction dissipated it, and as the
-    // clamp's work, the loop's area by the trapezoidal rule over every step
-    // and over every other step. Q/(F P) at both ends says whether the
-    // state came back to where it was.
+
+  // The energy of each cycle, from a turning point to the one two
+  // later (+Q* to -Q* and back): as friction dissipated it, and as the
+  // clamp's work, the loop's area by the trapezoidal rule over every step
+  // and over every other step. Q/(F P) at both ends says whether the
+  // state came back to where it was.
+  void
+  LoadPaths::measure_cycle_energy()
+  {
     pcout << "\nThe energy of each shear cycle, from +Q* to -Q* and back:\n"
           << "  from t  to t  Q/(F P) at both ends   dissipated   loop area, "
              "every step   every other step\n";
-    double dissipated = 0., area_1 = 0., area_2 = 0.;
     for (unsigned int k = 0; k + 2 < turns.size(); k += 2)
       {
         const CycleResult &begin = cycle.steps[turns[k]];
@@ -488,22 +620,28 @@ namespace Step8
               << format("%14.4e", dissipated) << format("%22.4e", area_1)
               << format("%19.4e", area_2) << "\n";
       }
-    const double rectangle =
+    const CycleResult &peak = cycle.steps[turns[0]];
+    const double       rectangle =
       4. * std::abs(Q_of(peak, clamp) * delta_of(peak, clamp));
     pcout << "  the last loop fills "
           << format("%.2f", 100. * area_1 / rectangle)
           << " % of the rectangle 2 Q* by 2 delta*\n\n";
+  }
 
-    // @sect4{The cost of a step}
-    //
-    // The cycle's steps in parts: the first (a cold start from the
-    // undeformed body), the rest of the pressing, the first shear from
-    // rest, the first step after each turning point (where the slip
-    // reverses), and the other steps of the later legs. Each part's mean
-    // per step; "linear solves" is the CG iterations over those of one
-    // linear solve with the step's final Newton matrix, from zero to the
-    // linear tolerance (<Solver/Time a reference linear solve>), whose time
-    // is in the last row.
+
+  // @sect4{The cost of a step}
+  //
+  // The cycle's steps in parts: the first (a cold start from the
+  // undeformed body), the rest of the pressing, the first shear from
+  // rest, the first step after each turning point (where the slip
+  // reverses), and the other steps of the later legs. Each part's mean
+  // per step; "linear solves" is the CG iterations over those of one
+  // linear solve with the step's final Newton matrix, from zero to the
+  // linear tolerance (<Solver/Time a reference linear solve>), whose time
+  // is in the last row.
+  void
+  LoadPaths::print_step_costs()
+  {
     struct Part
     {
       std::string               label;
@@ -525,7 +663,7 @@ namespace Step8
           kind = 3;
         parts[kind].steps.push_back(n);
       }
-    double reference_cg = 0., reference_time = 0.;
+    double reference_time = 0.;
     for (const CycleResult &r : cycle.steps)
       {
         reference_cg +=
@@ -562,12 +700,16 @@ namespace Step8
     pcout << "  one linear solve               1      -       -"
           << format("%7.0f", reference_cg) << "   1.0" << format("%15.2f", 1.)
           << (timing ? format("%11.3f", reference_time) : "") << "\n";
+  }
 
-    // The later steps together, against the cold first step and against
-    // the cold solve of variant (a), the final load in one step.
+
+  // The later steps together, against the cold first step and against
+  // the cold solve of variant (a), the final load in one step.
+  void
+  LoadPaths::print_later_steps()
+  {
     double             later_newton = 0., later_cg = 0., later_time = 0.;
-    unsigned int       most_newton = 0;
-    const unsigned int n_later     = cycle.steps.size() - 1;
+    const unsigned int n_later = cycle.steps.size() - 1;
     for (unsigned int n = 1; n < cycle.steps.size(); ++n)
       {
         const auto &s = cycle.steps[n].solve;
@@ -588,14 +730,20 @@ namespace Step8
           << " Newton steps, " << cold.cg_iterations
           << " CG; (a), the final load at once, " << once.newton_steps
           << " Newton steps, " << once.cg_iterations << " CG\n";
+  }
 
-    // @sect4{The figures' data}
-    //
-    // plot.gp draws the loop from the cycle's steps.csv, and the traction
-    // l2/(F p0) along x/a at +Q*, at the step nearest Q = 0 after it, and
-    // at -Q* from their contact_step_NNN.csv, with the predicted traction
-    // of each: output/figures.gp has the file names, a, p0 and the terms.
-    unsigned int unloaded = turns[0];
+
+  // @sect4{The figures' data}
+  //
+  // plot.gp draws the loop from the cycle's steps.csv, and the traction
+  // l2/(F p0) along x/a at +Q*, at the step nearest Q = 0 after it, and
+  // at -Q* from their contact_step_NNN.csv, with the predicted traction
+  // of each: output/figures.gp has the file names, a, p0 and the terms.
+  void
+  LoadPaths::write_figure_data() const
+  {
+    const CycleResult &peak     = cycle.steps[turns[0]];
+    unsigned int       unloaded = turns[0];
     for (unsigned int n = turns[0]; n <= turns[1]; ++n)
       if (std::abs(Q_of(cycle.steps[n], clamp)) <
           std::abs(Q_of(cycle.steps[unloaded], clamp)))
@@ -629,8 +777,13 @@ namespace Step8
             gp << "\n";
           }
       }
+  }
 
-    // @sect4{The checks}
+
+  // @sect4{The checks}
+  tutorial::Checks
+  LoadPaths::check_results() const
+  {
     pcout << "\nChecks:\n";
     tutorial::Checks checks;
     // 1. Cattaneo, whichever way the shear came after (or with) the normal
@@ -680,11 +833,19 @@ namespace Step8
              format("%.2e", std::abs(area_1 - area_2)));
     // 5. The warm start: a later step takes fewer Newton steps than the
     //    cold first step.
-    checks(most_newton < cold.newton_steps,
+    checks(most_newton < cycle.steps[0].solve.newton_steps,
            "every later step of the cycle takes fewer Newton steps (at most " +
              std::to_string(most_newton) + ") than its cold first step (" +
-             std::to_string(cold.newton_steps) + ")");
+             std::to_string(cycle.steps[0].solve.newton_steps) + ")");
     return checks;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &scene)
+  {
+    return LoadPaths(scene).run();
   }
 } // namespace Step8
 
