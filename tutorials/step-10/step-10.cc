@@ -302,15 +302,106 @@ namespace Step10
   }
 
   // @sect3{The whole step}
-  tutorial::Checks
-  run(const Parameters &scene)
+  //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as the stages below, one member function each, and members for what a
+  // later stage needs of an earlier one (the two runs, the differences and
+  // rates the checks judge).
+  class ElementComparison
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    const bool         timing   = scene.output.print_timing;
-    const unsigned int n_cycles = scene.refinement.n_cycles;
-    const unsigned int n_meshes = n_cycles + extra_meshes;
-    const unsigned int last     = n_cycles - 1; // the scene's last mesh
+  public:
+    explicit ElementComparison(const Parameters &scene);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene();
+    void
+    solve_both_elements();
+    void
+    print_mesh_table() const;
+    void
+    print_threshold_iteration() const;
+    void
+    print_wall() const;
+    void
+    compare_elements();
+    void
+    study_convergence();
+    void
+    study_corner();
+    void
+    write_figure_data() const;
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints) and whether it shows times; the
+    // scene's meshes, those of the convergence study, the scene's last.
+    const Parameters  &scene;
+    const bool         root;
+    ConditionalOStream pcout;
+    const bool         timing;
+    const unsigned int n_cycles;
+    const unsigned int n_meshes;
+    const unsigned int last;
+    double             F = 0.; // the friction coefficient
+
+    // The two runs, P1 on triangles and Q1 on quadrilaterals, and their
+    // names.
+    Run                      p1, q1;
+    std::vector<const Run *> runs;
+    std::string              P, Q;
+
+    // What the checks judge: P1 against Q1 per mesh, each element's mesh
+    // against the next and the rates, the corner's exponents and Williams'
+    // lambda.
+    std::vector<Difference>              p1_q1;
+    std::vector<std::vector<Difference>> steps;
+    std::vector<double>                  rates;
+    std::vector<std::vector<double>>     exponents;
+    double                               lambda = 0.;
+  };
+
+
+  ElementComparison::ElementComparison(const Parameters &scene)
+      : scene(scene)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout, root)
+      , timing(scene.output.print_timing)
+      , n_cycles(scene.refinement.n_cycles)
+      , n_meshes(n_cycles + extra_meshes)
+      , last(n_cycles - 1)
+  {}
+
+
+  // Both elements solved; then the meshes, the threshold iteration, the
+  // wall, P1 against Q1, the convergence and the corner; the data for
+  // plot.gp and the checks.
+  tutorial::Checks
+  ElementComparison::run()
+  {
+    check_scene();
+    solve_both_elements();
+    print_mesh_table();
+    print_threshold_iteration();
+    print_wall();
+    compare_elements();
+    study_convergence();
+    study_corner();
+    write_figure_data();
+    return check_results();
+  }
+
+
+  // @sect4{The scene this step needs}
+  //
+  // The 2D rectangle with Coulomb friction, refined globally at least
+  // once; anything else is refused with one message before a solve.
+  void
+  ElementComparison::check_scene()
+  {
     tutorial::require(
       scene.geometry.dimension == dim &&
         scene.geometry.type == GeometryType::rectangle &&
@@ -319,7 +410,6 @@ namespace Step10
       "step-10 compares P1 and Q1 on the block against the wall: it needs "
       "the 2D rectangle, Coulomb friction, <Refinement/Strategy> = global "
       "and two <Refinement/Number of cycles> or more.");
-    double F = 0.;
     try
       {
         F = std::stod(scene.friction.parameter);
@@ -335,20 +425,26 @@ namespace Step10
     pcout << "step-10: the paper's method on its own discretisation ("
           << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
           << " MPI rank(s))\n\n";
+  }
 
-    // @sect4{P1 and Q1 on the same vertices}
-    //
-    // The rectangle's 40 x 20 squares, each split into 2 triangles by
-    // <Geometry/Cell type> = simplex (FE_SimplexP(1) on a
-    // parallel::shared triangulation, doc/simplices.md), or kept as squares
-    // (FE_Q(1) on a parallel::distributed one). Both have one node per
-    // vertex, so the same DoFs on every mesh; the triangles are twice as
-    // many cells. Everything else is the scene: the same loads, r, chi,
-    // tolerances, and the threshold iteration it names.
-    const Run p1 = solve(scene, CellKind::simplex, n_meshes);
-    const Run q1 = solve(scene, CellKind::quadrilateral, n_meshes);
-    const std::vector<const Run *> runs = {&p1, &q1};
-    const std::string              P = p1.name, Q = q1.name;
+
+  // @sect4{P1 and Q1 on the same vertices}
+  //
+  // The rectangle's 40 x 20 squares, each split into 2 triangles by
+  // <Geometry/Cell type> = simplex (FE_SimplexP(1) on a
+  // parallel::shared triangulation, doc/simplices.md), or kept as squares
+  // (FE_Q(1) on a parallel::distributed one). Both have one node per
+  // vertex, so the same DoFs on every mesh; the triangles are twice as
+  // many cells. Everything else is the scene: the same loads, r, chi,
+  // tolerances, and the threshold iteration it names.
+  void
+  ElementComparison::solve_both_elements()
+  {
+    p1   = solve(scene, CellKind::simplex, n_meshes);
+    q1   = solve(scene, CellKind::quadrilateral, n_meshes);
+    runs = {&p1, &q1};
+    P    = p1.name;
+    Q    = q1.name;
 
     pcout << "The block against the wall, Coulomb F = " << F << ", "
           << (scene.friction.strategy == FrictionStrategy::nested ? "nested" :
@@ -356,14 +452,19 @@ namespace Step10
           << " threshold iteration; " << n_cycles
           << " meshes, each halving h, and " << extra_meshes
           << " more for the convergence study\n\n";
+  }
 
-    // One line per mesh: cells, DoFs, contact nodes, the loops' counts
-    // (threshold steps, Uzawa steps, Newton steps, CG iterations), the
-    // nodes that stick and slip, the normal contact force sum_s m_s l1_s,
-    // and with <Output/Print timing> the wall time of the solve (the three
-    // loops); after the table, the counts of all meshes and, with timing,
-    // the wall time of all phases of all meshes (refinement, set-up,
-    // assembly, solve, measurements, output).
+
+  // One line per mesh: cells, DoFs, contact nodes, the loops' counts
+  // (threshold steps, Uzawa steps, Newton steps, CG iterations), the
+  // nodes that stick and slip, the normal contact force sum_s m_s l1_s,
+  // and with <Output/Print timing> the wall time of the solve (the three
+  // loops); after the table, the counts of all meshes and, with timing,
+  // the wall time of all phases of all meshes (refinement, set-up,
+  // assembly, solve, measurements, output).
+  void
+  ElementComparison::print_mesh_table() const
+  {
     pcout << P << " on triangles against " << Q
           << " on quadrilaterals, the same vertices:\n"
           << "  element  cycle  cells   DoFs  nodes  threshold  Uzawa  Newton"
@@ -397,18 +498,23 @@ namespace Step10
             << " threshold steps, " << totals[i].uzawa_steps << " Uzawa, "
             << totals[i].newton_steps << " Newton, " << totals[i].cg_iterations
             << " CG" << (timing ? format(" (%.2f s)", times[i]) : "") << "\n";
+  }
 
-    // @sect4{The threshold iteration}
-    //
-    // Each threshold step solves the given-threshold problem for g by the
-    // Uzawa iteration, then sets g <- F l1 and measures d(g). g enters the
-    // solution only at the nodes that slip (|l2| = g): while every node
-    // sticks, the next given-threshold problem has the same solution, its
-    // Uzawa iteration stops after one step, and d(g) is at round-off. A
-    // slipping node couples g and l1, and the successive approximations
-    // contract by a factor per step (doc/theory.md §3.1). The merged
-    // strategy has no threshold steps of its own: g <- F l1 in every Uzawa
-    // step, and the table counts each Uzawa step as one.
+
+  // @sect4{The threshold iteration}
+  //
+  // Each threshold step solves the given-threshold problem for g by the
+  // Uzawa iteration, then sets g <- F l1 and measures d(g). g enters the
+  // solution only at the nodes that slip (|l2| = g): while every node
+  // sticks, the next given-threshold problem has the same solution, its
+  // Uzawa iteration stops after one step, and d(g) is at round-off. A
+  // slipping node couples g and l1, and the successive approximations
+  // contract by a factor per step (doc/theory.md §3.1). The merged
+  // strategy has no threshold steps of its own: g <- F l1 in every Uzawa
+  // step, and the table counts each Uzawa step as one.
+  void
+  ElementComparison::print_threshold_iteration() const
+  {
     pcout << "\nThe threshold iteration: ";
     if (scene.friction.strategy == FrictionStrategy::merged)
       pcout << "merged, g <- F l1 in every Uzawa step\n";
@@ -428,11 +534,16 @@ namespace Step10
                     << format(" %.0f)", double(step.n_slip));
           pcout << "\n";
         }
+  }
 
-    // @sect4{The wall on the last mesh}
-    //
-    // Stick and slip along the wall, Coulomb's cone at every node, and the
-    // four highest nodes, where the two elements differ most.
+
+  // @sect4{The wall on the last mesh}
+  //
+  // Stick and slip along the wall, Coulomb's cone at every node, and the
+  // four highest nodes, where the two elements differ most.
+  void
+  ElementComparison::print_wall() const
+  {
     const std::vector<WallNode> &wall_p1 = p1.wall[last];
     const std::vector<WallNode> &wall_q1 = q1.wall[last];
     AssertThrow(wall_p1.size() == wall_q1.size(),
@@ -474,18 +585,22 @@ namespace Step10
             << format("%10.4f", wall_q1[i].l1)
             << format("%10.4f", wall_q1[i].l2) << "  " << wall_q1[i].status
             << "\n";
+  }
 
-    // @sect4{P1 against Q1}
-    //
-    // On every mesh the two elements have the same contact nodes. Their
-    // pressures, node by node, relative to Q1's.
+
+  // @sect4{P1 against Q1}
+  //
+  // On every mesh the two elements have the same contact nodes. Their
+  // pressures, node by node, relative to Q1's.
+  void
+  ElementComparison::compare_elements()
+  {
     pcout << "\n"
           << P << " against " << Q
           << ": l1 on the nodes of each mesh, relative to " << Q << "'s:\n"
           << "  cycle  nodes  rms difference  without the corner  largest "
              "difference       at y  "
           << Q << "'s l1 there\n";
-    std::vector<Difference> p1_q1;
     for (unsigned int c = 0; c < n_meshes; ++c)
       {
         p1_q1.push_back(compare(p1.wall[c], q1.wall[c]));
@@ -497,18 +612,22 @@ namespace Step10
               << format("%20.4f", d.largest) << format("%11.4f", d.y)
               << format("%15.4f", d.reference_l1) << "\n";
       }
+  }
 
-    // @sect4{Convergence under halving}
-    //
-    // Each mesh against the next, on the nodes of the coarser one, relative
-    // to the finer one's pressure; the rate per halving of h between two
-    // such differences, log2(d_c / d_{c+1}).
+
+  // @sect4{Convergence under halving}
+  //
+  // Each mesh against the next, on the nodes of the coarser one, relative
+  // to the finer one's pressure; the rate per halving of h between two
+  // such differences, log2(d_c / d_{c+1}).
+  void
+  ElementComparison::study_convergence()
+  {
     pcout << "\nConvergence under halving: l1 of mesh c + 1 against mesh c "
              "on the nodes of mesh c:\n"
           << "  element  meshes  rms difference   rate  without the corner   "
              "rate    largest       at y\n";
-    std::vector<std::vector<Difference>> steps(runs.size());
-    std::vector<double>                  rates;
+    steps.resize(runs.size());
     for (unsigned int i = 0; i < runs.size(); ++i)
       for (unsigned int c = 0; c + 1 < n_meshes; ++c)
         {
@@ -530,15 +649,20 @@ namespace Step10
                 << format("%20.3e", d.rms_without_corner) << rate_without
                 << format("%11.4f", d.largest) << format("%11.4f", d.y) << "\n";
         }
+  }
 
-    // The corner: its pressure on every mesh, and the exponent a of
-    // l1 ~ h^(-a) from each three consecutive meshes, against Williams.
-    const double nu     = scene.material.poissons_ratio;
-    const double lambda = williams_lambda(nu);
-    pcout << "\nThe top corner (y = " << wall_p1.back().y
+
+  // The corner: its pressure on every mesh, and the exponent a of
+  // l1 ~ h^(-a) from each three consecutive meshes, against Williams.
+  void
+  ElementComparison::study_corner()
+  {
+    const double nu = scene.material.poissons_ratio;
+    lambda          = williams_lambda(nu);
+    pcout << "\nThe top corner (y = " << p1.wall[last].back().y
           << "): l1 on each mesh, and a in l1 ~ h^(-a) from the increments "
              "of three meshes:\n";
-    std::vector<std::vector<double>> exponents(runs.size());
+    exponents.resize(runs.size());
     for (unsigned int i = 0; i < runs.size(); ++i)
       {
         pcout << "  " << runs[i]->name << "  l1:";
@@ -560,11 +684,18 @@ namespace Step10
           << ", a = 1 - lambda = " << format("%.3f", 1. - lambda)
           << ", rate of the rms 1/2 - a = " << format("%.3f", lambda - 0.5)
           << "\n";
+  }
 
-    // @sect4{The figure's data}
-    //
-    // The wall on the scene's last mesh, one row per node: plot.gp draws
-    // the pressure of P1 and Q1 along it (pressure.svg).
+
+  // @sect4{The figure's data}
+  //
+  // The wall on the scene's last mesh, one row per node: plot.gp draws
+  // the pressure of P1 and Q1 along it (pressure.svg).
+  void
+  ElementComparison::write_figure_data() const
+  {
+    const std::vector<WallNode> &wall_p1 = p1.wall[last];
+    const std::vector<WallNode> &wall_q1 = q1.wall[last];
     if (root)
       {
         std::ofstream csv(scene.output.directory + "/wall.csv");
@@ -575,11 +706,16 @@ namespace Step10
               << ',' << wall_p1[i].l2 << ',' << wall_q1[i].l2 << ','
               << wall_p1[i].status << ',' << wall_q1[i].status << '\n';
       }
+  }
 
-    // @sect4{The checks}
-    //
-    // What the README claims, on the step's own numbers; the README's table
-    // "The checks" gives each bound's reason.
+
+  // @sect4{The checks}
+  //
+  // What the README claims, on the step's own numbers; the README's table
+  // "The checks" gives each bound's reason.
+  tutorial::Checks
+  ElementComparison::check_results() const
+  {
     pcout << "\nChecks:\n";
     tutorial::Checks checks;
     // 1. The same DoFs and the same contact nodes on every mesh.
@@ -705,6 +841,14 @@ namespace Step10
                format("%.3f", 1. - lambda));
     }
     return checks;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &scene)
+  {
+    return ElementComparison(scene).run();
   }
 } // namespace Step10
 
