@@ -207,54 +207,21 @@ namespace Step1
     return record; // no friction: change_l2, change_g, stick, slip stay 0
   }
 
-  // @sect3{One contact solve, with the Uzawa iteration written out}
+  // @sect3{The Uzawa iteration, written out}
   //
-  // The library's ContactProblem::run() calls solve(), which runs the
-  // threshold iteration around UzawaIteration::solve(). For a frictionless
-  // scene the threshold iteration has nothing to do, and what remains is
-  // the loop we write here. With `verbose` the function prints the scene and
-  // one line per Uzawa step, and writes the solution for ParaView.
+  // The loop of the algorithm's lines 2-15 on a problem that
+  // solve_contact() below has set up: with `pcout` one line per Uzawa step;
+  // the counts and d(l1) of each step go to `result`. It returns v^{k+1} of
+  // the last step, the converged displacement.
   template <int dim>
-  ContactSolve
-  solve_contact(const Parameters &parameters, const bool verbose)
+  TrilinosWrappers::MPI::Vector
+  uzawa_iteration(const Parameters         &parameters,
+                  ContactProblem<dim>      &problem,
+                  const ConditionalOStream &pcout,
+                  ContactSolve             &result)
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    ConditionalOStream pcout(std::cout,
-                             verbose &&
-                               Utilities::MPI::this_mpi_process(comm) == 0);
-    const bool         timing = parameters.output.print_timing;
-
-    // The phases of one refinement cycle of ContactProblem::run(), up to the
-    // solve: the mesh (the half disc, refined toward the plane), the degrees
-    // of freedom and the contact nodes with their weights
-    //   m_s = int_{Gamma_C} phi_s,
-    // (the nodal quadrature of doc/theory.md §4: ContactSet::setup adds the
-    // face integrals through the hanging-node constraints, so a hanging
-    // node's share goes to the nodes it hangs on and a hanging node is no
-    // contact node), and the matrices K = A + chi M, M (lumped) and the
-    // load b. transfer_fields() carries fields from a
-    // coarser mesh; on the first mesh there is none, so it does nothing.
-    ContactProblem<dim> problem(parameters, comm, std::cout);
-    problem.make_grid();
-    if (verbose)
-      problem.get_report().print_scene();
-    const MeshRecord mesh = problem.setup_system(0);
-    problem.transfer_fields();
-    problem.assemble_system();
-
-    // prepare_contact_solve() fixes r = r_rel (lambda + 2 mu) / h_C, h_C the
-    // smallest face on Gamma_C, and checks that the load pushes the disc
-    // onto the plane (else no equilibrium exists, doc/theory.md §8). The
-    // proximal weight was fixed by the assembly: chi = chi_rel E / R^2.
-    const SolveRecord constants = problem.prepare_contact_solve();
-    ContactSolve      result;
-    result.r_rel = parameters.solver.augmentation;
-    result.r     = constants.r;
-    result.load  = constants.normal_load;
-    pcout << "Mesh: " << mesh.n_cells << " cells, " << mesh.n_dofs << " DoFs, "
-          << constants.n_contact_nodes << " contact nodes\n"
-          << "r_rel = " << result.r_rel << ": r = " << result.r
-          << ", chi = " << constants.chi << "\n";
+    const MPI_Comm comm   = MPI_COMM_WORLD;
+    const bool     timing = parameters.output.print_timing;
 
     // What the loop works on: the system (K, M, b, r, chi) and the contact
     // nodes with their multipliers l1_s, all zero after the set-up; v starts
@@ -373,17 +340,73 @@ namespace Step1
           break;
       }
 
+    timer.stop();
+    result.time = timer.wall_time();
+    return v;
+  }
+
+  // @sect3{One contact solve, with the Uzawa iteration written out}
+  //
+  // The library's ContactProblem::run() calls solve(), which runs the
+  // threshold iteration around UzawaIteration::solve(). For a frictionless
+  // scene the threshold iteration has nothing to do, and what remains is
+  // the loop we write here. With `verbose` the function prints the scene and
+  // one line per Uzawa step, and writes the solution for ParaView.
+  template <int dim>
+  ContactSolve
+  solve_contact(const Parameters &parameters, const bool verbose)
+  {
+    const MPI_Comm     comm = MPI_COMM_WORLD;
+    ConditionalOStream pcout(std::cout,
+                             verbose &&
+                               Utilities::MPI::this_mpi_process(comm) == 0);
+    const bool         timing = parameters.output.print_timing;
+
+    // The phases of one refinement cycle of ContactProblem::run(), up to the
+    // solve: the mesh (the half disc, refined toward the plane), the degrees
+    // of freedom and the contact nodes with their weights
+    //   m_s = int_{Gamma_C} phi_s,
+    // (the nodal quadrature of doc/theory.md §4: ContactSet::setup adds the
+    // face integrals through the hanging-node constraints, so a hanging
+    // node's share goes to the nodes it hangs on and a hanging node is no
+    // contact node), and the matrices K = A + chi M, M (lumped) and the
+    // load b. transfer_fields() carries fields from a
+    // coarser mesh; on the first mesh there is none, so it does nothing.
+    ContactProblem<dim> problem(parameters, comm, std::cout);
+    problem.make_grid();
+    if (verbose)
+      problem.get_report().print_scene();
+    const MeshRecord mesh = problem.setup_system(0);
+    problem.transfer_fields();
+    problem.assemble_system();
+
+    // prepare_contact_solve() fixes r = r_rel (lambda + 2 mu) / h_C, h_C the
+    // smallest face on Gamma_C, and checks that the load pushes the disc
+    // onto the plane (else no equilibrium exists, doc/theory.md §8). The
+    // proximal weight was fixed by the assembly: chi = chi_rel E / R^2.
+    const SolveRecord constants = problem.prepare_contact_solve();
+    ContactSolve      result;
+    result.r_rel = parameters.solver.augmentation;
+    result.r     = constants.r;
+    result.load  = constants.normal_load;
+    pcout << "Mesh: " << mesh.n_cells << " cells, " << mesh.n_dofs << " DoFs, "
+          << constants.n_contact_nodes << " contact nodes\n"
+          << "r_rel = " << result.r_rel << ": r = " << result.r
+          << ", chi = " << constants.chi << "\n";
+
+    // The Uzawa iteration (the function above), timed: the solve alone.
+    const TrilinosWrappers::MPI::Vector v =
+      uzawa_iteration(parameters, problem, pcout, result);
+
     // The Uzawa iteration worked on its own copy of v; hand it back to the
     // problem, then measure the contact zone: the force sum_s m_s l1_s, the
     // peak max_s l1_s, the half-width (the edges extrapolated from l1^2,
     // which is linear near a square-root edge), and, since the scene sets
     // <Exact solution/Contact pressure>, the relative L2 error of the
     // pressure on Gamma_C.
-    timer.stop();
-    result.time = timer.wall_time();
     problem.set_displacement(v);
     result.zone     = problem.measure_contact_zone();
-    result.pressure = gather_pressure(contact, comm);
+    result.pressure = gather_pressure(problem.contact(), comm);
     if (verbose)
       problem.output_results(0); // creates the output directory; vtu if asked
     pcout << "   contact solved: " << result.uzawa_steps << " Uzawa steps, "
@@ -395,31 +418,120 @@ namespace Step1
 
   // @sect3{The whole step}
   //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as its stages, one member function each, and members for what a later
+  // stage needs of an earlier one (the detailed solve, the r study).
+  template <int dim>
+  class HertzContact
+  {
+  public:
+    explicit HertzContact(const Parameters &parameters);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    solve_detailed();
+    Hertz
+    hertz() const;
+    void
+    compare_with_hertz() const;
+    void
+    write_pressure_profile() const;
+    void
+    solve_r_study();
+    void
+    print_r_study() const;
+    void
+    write_uzawa_convergence() const;
+    tutorial::Checks
+    check_results() const;
+
+    static double
+    difference(const ContactSolve &a, const ContactSolve &b);
+    static double
+    rate(const std::vector<double> &d);
+
+    // The scene, the screen (rank 0 prints), whether it shows times, the
+    // Uzawa tolerance and the folder of the CSV files.
+    const Parameters  &parameters;
+    const bool         root;
+    ConditionalOStream pcout;
+    const bool         timing;
+    const double       tolerance;
+    const std::string  directory;
+
+    // The detailed solve at the prm's r_rel, the factor its forces take
+    // for the comparison with Hertz, and the solves of the r study.
+    ContactSolve              main;
+    double                    symmetry = 1.;
+    std::vector<ContactSolve> study;
+  };
+
+
+  template <int dim>
+  HertzContact<dim>::HertzContact(const Parameters &parameters)
+      : parameters(parameters)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout, root)
+      , timing(parameters.output.print_timing)
+      , tolerance(parameters.solver.uzawa_tolerance)
+      , directory(parameters.output.directory + "/")
+  {}
+
+
   // 1. the detailed solve at the prm's r_rel, compared with Hertz;
   // 2. the pressure profile for the figure;
   // 3. the r study;
   // 4. the checks.
   template <int dim>
   tutorial::Checks
-  run(const Parameters &parameters)
+  HertzContact<dim>::run()
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    const bool         timing    = parameters.output.print_timing;
-    const double       tolerance = parameters.solver.uzawa_tolerance;
+    solve_detailed();
+    compare_with_hertz();
+    write_pressure_profile();
+    solve_r_study();
+    print_r_study();
+    write_uzawa_convergence();
+    return check_results();
+  }
 
-    // @sect4{The detailed solve and Hertz}
-    const ContactSolve main = solve_contact<dim>(parameters, true);
+
+  // @sect4{The detailed solve and Hertz}
+  template <int dim>
+  void
+  HertzContact<dim>::solve_detailed()
+  {
+    main = solve_contact<dim>(parameters, true);
     // The quarter disc (an extension in the README) is the right half of
     // the same problem, held on its symmetry line x = 0 by a slider: it
     // carries half the load, so its forces are doubled for the comparison.
     // Its contact zone 0 <= x <= a stops at the point where the contact
     // begins: measure_contact_zone() takes it for a model cut by a plane of
     // symmetry and measures the whole zone, mirrored across x = 0.
-    const double symmetry =
+    const double factor =
       parameters.geometry.type == GeometryType::quarter_disc ? 2. : 1.;
-    const Hertz hertz(parameters, symmetry * main.load);
+    symmetry = factor;
+  }
+
+
+  // Hertz for the load of the detailed solve (the whole disc's).
+  template <int dim>
+  Hertz
+  HertzContact<dim>::hertz() const
+  {
+    return Hertz(parameters, symmetry * main.load);
+  }
+
+
+  // The contact zone of the detailed solve against Hertz's P, p0 and a.
+  template <int dim>
+  void
+  HertzContact<dim>::compare_with_hertz() const
+  {
+    const Hertz hertz    = this->hertz();
     const auto  relative = [](const double x, const double exact) {
       return format("%+.2e", x / exact - 1.);
     };
@@ -441,12 +553,18 @@ namespace Step1
           << format("%.8f", main.zone.half_width) << "\n"
           << "   pressure error, relative L2 on Gamma_C = "
           << format("%.6e", main.zone.pressure_error) << "\n";
+  }
 
-    // @sect4{The pressure profile}
-    //
-    // One row per contact node, all ranks gathered: x, the computed l1 and
-    // Hertz's p(x). plot.gp draws them (pressure.svg).
-    const std::string directory = parameters.output.directory + "/";
+
+  // @sect4{The pressure profile}
+  //
+  // One row per contact node, all ranks gathered: x, the computed l1 and
+  // Hertz's p(x). plot.gp draws them (pressure.svg).
+  template <int dim>
+  void
+  HertzContact<dim>::write_pressure_profile() const
+  {
+    const Hertz hertz = this->hertz();
     if (root)
       {
         std::ofstream csv(directory + "pressure.csv");
@@ -456,56 +574,79 @@ namespace Step1
           csv << node.x << ',' << node.l1 << ',' << hertz.pressure(node.x)
               << '\n';
       }
+  }
 
-    // @sect4{What r costs}
-    //
-    // The same mesh for r_rel over three decades: a copy of the parameters
-    // with <Solver/Augmentation parameter> changed, and a new
-    // ContactProblem each (r enters only the Uzawa iteration, but a new
-    // problem is the honest way to start from zero). doc/theory.md §5
-    // predicts: on a fixed active set an error mode of boundary compliance
-    // c is damped by 1/(1 + r c) per Uzawa step, so the rate is about
-    // rho = 1/(1 + C r_rel) and the steps about 2 + ln(d_2/tol) / ln(1/rho)
-    // (d_2 the change of the second step): many for small r, though like
-    // 1/r_rel only where C r_rel << 1 (README, "Results": C = 1.9-2.4 is
-    // measured here); large r means few steps, but the Newton matrix K +
-    // sum m_s r n n^T becomes stiff on the contact nodes, its condition
-    // number grows, and the first proximal step costs more Newton steps
-    // (cut short by the line search) and CG iterations.
+
+  // @sect4{What r costs}
+  //
+  //
+  // The same mesh for r_rel over three decades: a copy of the parameters
+  // with <Solver/Augmentation parameter> changed, and a new
+  // ContactProblem each (r enters only the Uzawa iteration, but a new
+  // problem is the honest way to start from zero). doc/theory.md §5
+  // predicts: on a fixed active set an error mode of boundary compliance
+  // c is damped by 1/(1 + r c) per Uzawa step, so the rate is about
+  // rho = 1/(1 + C r_rel) and the steps about 2 + ln(d_2/tol) / ln(1/rho)
+  // (d_2 the change of the second step): many for small r, though like
+  // 1/r_rel only where C r_rel << 1 (README, "Results": C = 1.9-2.4 is
+  // measured here); large r means few steps, but the Newton matrix K +
+  // sum m_s r n n^T becomes stiff on the contact nodes, its condition
+  // number grows, and the first proximal step costs more Newton steps
+  // (cut short by the line search) and CG iterations.
+  template <int dim>
+  void
+  HertzContact<dim>::solve_r_study()
+  {
     pcout << "\nThe r study (same mesh, cold start each, Uzawa tolerance "
           << tolerance << "):\n";
     const std::vector<double> r_values = {0.1, 1., 10., 100.};
-    std::vector<ContactSolve> study;
     for (const double r_rel : r_values)
       {
         Parameters copy          = parameters;
         copy.solver.augmentation = r_rel;
         study.push_back(solve_contact<dim>(copy, false));
       }
+  }
 
-    // The converged pressure must not depend on r: the fixed points of the
-    // update are the Signorini conditions whatever r is. The difference to
-    // the detailed solve, in the weighted norm sqrt(sum_s m_s l1_s^2)
-    // (a quadrature of the L2 norm on Gamma_C), relative.
-    const auto difference = [&](const ContactSolve &a, const ContactSolve &b) {
-      double d = 0., n = 0.;
-      for (unsigned int i = 0; i < a.pressure.size(); ++i)
-        {
-          d += a.pressure[i].weight *
-               std::pow(a.pressure[i].l1 - b.pressure[i].l1, 2);
-          n += b.pressure[i].weight * std::pow(b.pressure[i].l1, 2);
-        }
-      return std::sqrt(d / n);
-    };
 
-    // The mean contraction of d(l1) per step after the first two (the
-    // first step finds the active set; the second starts the linear
-    // convergence): rho = (d_K / d_2)^(1/(K-2)).
-    const auto rate = [](const std::vector<double> &d) {
-      const unsigned int K = d.size();
-      return K > 2 ? std::pow(d[K - 1] / d[1], 1. / (K - 2.)) : 0.;
-    };
+  // The converged pressure must not depend on r: the fixed points of the
+  // update are the Signorini conditions whatever r is. The difference to
+  // the detailed solve, in the weighted norm sqrt(sum_s m_s l1_s^2)
+  // (a quadrature of the L2 norm on Gamma_C), relative.
+  template <int dim>
+  double
+  HertzContact<dim>::difference(const ContactSolve &a, const ContactSolve &b)
+  {
+    double d = 0., n = 0.;
+    for (unsigned int i = 0; i < a.pressure.size(); ++i)
+      {
+        d += a.pressure[i].weight *
+             std::pow(a.pressure[i].l1 - b.pressure[i].l1, 2);
+        n += b.pressure[i].weight * std::pow(b.pressure[i].l1, 2);
+      }
+    return std::sqrt(d / n);
+  }
 
+
+  // The mean contraction of d(l1) per step after the first two (the
+  // first step finds the active set; the second starts the linear
+  // convergence): rho = (d_K / d_2)^(1/(K-2)).
+  template <int dim>
+  double
+  HertzContact<dim>::rate(const std::vector<double> &d)
+  {
+    const unsigned int K = d.size();
+    return K > 2 ? std::pow(d[K - 1] / d[1], 1. / (K - 2.)) : 0.;
+  }
+
+
+  // The r study's table: per r_rel the Uzawa and Newton steps, the CG
+  // iterations, the rate, the pressure error and the difference to the
+  // detailed solve.
+  template <int dim>
+  void
+  HertzContact<dim>::print_r_study() const
+  {
     pcout << "   r_rel            r  Uzawa  Newton    CG   rate  "
              "pressure error  vs detailed"
           << (timing ? "  solve [s]" : "") << "\n";
@@ -516,8 +657,14 @@ namespace Step1
             << format("%16.8e", s.zone.pressure_error)
             << format("%13.1e", difference(s, main))
             << (timing ? format("%11.3f", s.time) : "") << "\n";
+  }
 
-    // d(l1) per Uzawa step for every r: the convergence figure.
+
+  // d(l1) per Uzawa step for every r: the convergence figure.
+  template <int dim>
+  void
+  HertzContact<dim>::write_uzawa_convergence() const
+  {
     if (root)
       {
         std::ofstream csv(directory + "uzawa_convergence.csv");
@@ -526,13 +673,19 @@ namespace Step1
           for (unsigned int k = 0; k < s.change_l1.size(); ++k)
             csv << s.r_rel << ',' << k + 1 << ',' << s.change_l1[k] << '\n';
       }
+  }
 
-    // @sect4{The checks}
-    //
-    // The program ends by testing what the text claims, with bounds taken
-    // from measured values with a margin (the README lists them with their
-    // reasons). Each prints a line; main() ends with one message naming the
-    // failed ones and exit status 1.
+
+  // @sect4{The checks}
+  //
+  // The program ends by testing what the text claims, with bounds taken
+  // from measured values with a margin (the README lists them with their
+  // reasons). Each prints a line; main() ends with one message naming the
+  // failed ones and exit status 1.
+  template <int dim>
+  tutorial::Checks
+  HertzContact<dim>::check_results() const
+  {
     tutorial::Checks check;
     pcout << "\nChecks:\n";
 
@@ -594,6 +747,15 @@ namespace Step1
 
     pcout << "Output written to " << directory << "\n";
     return check;
+  }
+
+
+  // The step as main() calls it: the program on the scene.
+  template <int dim>
+  tutorial::Checks
+  run(const Parameters &parameters)
+  {
+    return HertzContact<dim>(parameters).run();
   }
 } // namespace Step1
 
