@@ -566,21 +566,91 @@ namespace Step3
   }
 
   // @sect3{The whole step}
-  tutorial::Checks
-  run(const Parameters &parameters)
+  //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as its stages, one member function each, and members for what a later
+  // stage needs of an earlier one (the two runs and the figures the checks
+  // judge).
+  class ThresholdStrategies
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    // A 2D scene whose friction threshold depends on the pressure through
-    // a coefficient F (Coulomb, or a law of that kind that you add).
+  public:
+    explicit ThresholdStrategies(const Parameters &parameters);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene();
+    void
+    solve_both_strategies();
+    void
+    print_costs();
+    void
+    compare_on_finest_mesh();
+    void
+    write_figure_data() const;
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints), whether it shows times, and
+    // the friction coefficient.
+    const Parameters  &parameters;
+    const bool         root;
+    ConditionalOStream pcout;
+    const bool         timing;
+    double             F = 0.;
+
+    // The largest error of the one-node test, the two runs and their
+    // totals; on the finest mesh: the nodes, the largest differences of l1
+    // and l2 between the runs, the stick and slip zones, and the nodes per
+    // status (separated, stick, slip).
+    double                    one_node = 0.;
+    BlockRun                  nested, merged;
+    ContactStatistics         totals[2];
+    unsigned int              n_nodes = 0;
+    double                    d_l1 = 0., d_l2 = 0.;
+    std::pair<double, double> stick, slip;
+    unsigned int              counts[3] = {0, 0, 0};
+  };
+
+
+  ThresholdStrategies::ThresholdStrategies(const Parameters &parameters)
+      : parameters(parameters)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout, root)
+      , timing(parameters.output.print_timing)
+  {}
+
+
+  // The friction term on one node (section 3 of the README), then both
+  // strategies on the block, their cost, their solutions compared, the
+  // data for plot.gp and the checks.
+  tutorial::Checks
+  ThresholdStrategies::run()
+  {
+    check_scene();
+    one_node = show_one_node(pcout);
+    solve_both_strategies();
+    print_costs();
+    compare_on_finest_mesh();
+    write_figure_data();
+    return check_results();
+  }
+
+
+  // A 2D scene whose friction threshold depends on the pressure through
+  // a coefficient F (Coulomb, or a law of that kind that you add).
+  void
+  ThresholdStrategies::check_scene()
+  {
     const auto law = create_friction_law(parameters.friction.law);
     AssertThrow(parameters.geometry.dimension == dim &&
                   law->depends_on_pressure() &&
                   law->parameter_entry() == "Coefficient",
                 ExcMessage("step-3 needs a 2D scene with Coulomb friction "
                            "(or another law theta(F, l1))."));
-    const bool   timing = parameters.output.print_timing;
-    const double F      = std::stod(parameters.friction.parameter);
+    F = std::stod(parameters.friction.parameter);
     if (root)
       std::filesystem::create_directories(parameters.output.directory);
 
@@ -588,31 +658,37 @@ namespace Step3
              "threshold iteration ("
           << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
           << " MPI rank(s))\n\n";
-    const double one_node = show_one_node(pcout);
+  }
 
-    // @sect4{Nested against merged}
-    //
-    // Both strategies, from the same start on the same meshes. The first
-    // mesh starts cold (v = 0, l1 = l2 = 0, theta^(0) = 0); every refined
-    // mesh starts from the previous mesh's v, l1, l2 and theta (nested
-    // iteration, doc/theory.md §7), so that the cost of the later meshes
-    // shows what each strategy does from a good first guess.
+
+  // @sect4{Nested against merged}
+  //
+  // Both strategies, from the same start on the same meshes. The first
+  // mesh starts cold (v = 0, l1 = l2 = 0, theta^(0) = 0); every refined
+  // mesh starts from the previous mesh's v, l1, l2 and theta (nested
+  // iteration, doc/theory.md §7), so that the cost of the later meshes
+  // shows what each strategy does from a good first guess.
+  void
+  ThresholdStrategies::solve_both_strategies()
+  {
     pcout << "The block against the wall, Coulomb F = " << F << '\n';
-    const BlockRun nested =
-      solve_block(parameters, FrictionStrategy::nested, pcout);
-    const BlockRun merged =
-      solve_block(parameters, FrictionStrategy::merged, pcout);
+    nested = solve_block(parameters, FrictionStrategy::nested, pcout);
+    merged = solve_block(parameters, FrictionStrategy::merged, pcout);
+  }
 
-    // The cost, per mesh and in total. For the nested strategy `threshold`
-    // counts the given-threshold problems solved and `Uzawa` all the Uzawa
-    // steps spent on them; for the merged one the two are the same, since
-    // theta moves in every Uzawa step. Each Uzawa step is one proximal
-    // step, a few Newton steps, each one CG solve: the Newton and CG
-    // columns are what the time goes into.
+
+  // The cost, per mesh and in total. For the nested strategy `threshold`
+  // counts the given-threshold problems solved and `Uzawa` all the Uzawa
+  // steps spent on them; for the merged one the two are the same, since
+  // theta moves in every Uzawa step. Each Uzawa step is one proximal
+  // step, a few Newton steps, each one CG solve: the Newton and CG
+  // columns are what the time goes into.
+  void
+  ThresholdStrategies::print_costs()
+  {
     pcout << "\nThe cost of the two strategies, per mesh and in total:\n"
           << "  strategy  cycle    DoFs  threshold  Uzawa  Newton     CG  stick"
              "  slip\n";
-    ContactStatistics totals[2];
     for (const unsigned int i : {0, 1})
       {
         const BlockRun &run = i == 0 ? nested : merged;
@@ -633,17 +709,22 @@ namespace Step3
               << std::setw(7) << totals[i].cg_iterations
               << (timing ? format("  (%.2f s)", run.time) : "") << '\n';
       }
+  }
 
-    // How far apart are the two solutions? The merged one is a fixed point
-    // of theta = F l1 to the Uzawa tolerance (its test on d(l1) = d(theta));
-    // the nested one lags by its last threshold step, d(theta) <= tol_theta
-    // in the Euclidean norm, which can concentrate at one node up to
-    // sqrt(N) tol_theta. The two solutions on the finest mesh, node by
-    // node: the same nodes in the same order, since both runs made the same
-    // meshes.
+
+  // How far apart are the two solutions? The merged one is a fixed point
+  // of theta = F l1 to the Uzawa tolerance (its test on d(l1) = d(theta));
+  // the nested one lags by its last threshold step, d(theta) <= tol_theta
+  // in the Euclidean norm, which can concentrate at one node up to
+  // sqrt(N) tol_theta. The two solutions on the finest mesh, node by
+  // node: the same nodes in the same order, since both runs made the same
+  // meshes.
+  void
+  ThresholdStrategies::compare_on_finest_mesh()
+  {
     AssertThrow(nested.nodes.size() == merged.nodes.size(), ExcInternalError());
-    const unsigned int n_nodes = merged.nodes.size();
-    double             d_l1 = 0., d_l2 = 0., l1_max = 0., theta_max = 0.;
+    n_nodes       = merged.nodes.size();
+    double l1_max = 0., theta_max = 0.;
     for (unsigned int i = 0; i < n_nodes; ++i)
       {
         d_l1 =
@@ -658,9 +739,8 @@ namespace Step3
 
     // The zones along the wall, measured from its foot y = 0: a node
     // sticks where |l2| < F l1 and slips where |l2| = F l1.
-    const auto   stick     = zone_extent(merged.nodes, 1);
-    const auto   slip      = zone_extent(merged.nodes, 2);
-    unsigned int counts[3] = {0, 0, 0};
+    stick = zone_extent(merged.nodes, 1);
+    slip  = zone_extent(merged.nodes, 2);
     for (const NodeValues &n : merged.nodes)
       ++counts[n.status];
     const ContactZoneRecord &zone = merged.zone;
@@ -679,7 +759,14 @@ namespace Step3
           << format("%.2e", d_l1) << ",\n"
           << "                         max |l2 difference| / max F l1 = "
           << format("%.2e", d_l2) << '\n';
+  }
 
+
+  // The finest mesh's nodes and each strategy's d(theta) per threshold
+  // step of the first mesh, for plot.gp.
+  void
+  ThresholdStrategies::write_figure_data() const
+  {
     write_nodes(merged.nodes, parameters.output.directory + "/contact.csv");
     if (root)
       {
@@ -690,25 +777,30 @@ namespace Step3
           for (const auto &[k, change] : r->history)
             out << r->name << ',' << k << ',' << change << '\n';
       }
+  }
 
-    // @sect4{The checks}
-    //
-    // 1. The friction term of one node: the closed forms against the search
-    //    and the central differences. The search resolves the minimum to
-    //    round-off; the differences with h = 1e-6 are exact for the
-    //    piecewise quadratic Phi away from a kink up to round-off of order
-    //    1e-16/h = 1e-10.
-    // 2. Only the wall holds the block along x, so the normal contact force
-    //    sum_s m_s l1_s equals the net load toward the wall, up to the
-    //    solver tolerances (doc/theory.md §6: the Newton target, the
-    //    Uzawa tolerance on the change of v). The slider shares the vertical
-    //    load with the wall, so the wall's tangential force is not fixed by
-    //    statics and is not checked.
-    // 3. Coulomb's cone, to the bound of cone_bound() above.
-    // 4. Nested and merged agree to that bound plus the solutions' own
-    //    tolerance.
-    // 5. The wall has the zones step-3.prm promises.
-    // 6. The merged strategy is the cheaper one.
+
+  // @sect4{The checks}
+  //
+  // 1. The friction term of one node: the closed forms against the search
+  //    and the central differences. The search resolves the minimum to
+  //    round-off; the differences with h = 1e-6 are exact for the
+  //    piecewise quadratic Phi away from a kink up to round-off of order
+  //    1e-16/h = 1e-10.
+  // 2. Only the wall holds the block along x, so the normal contact force
+  //    sum_s m_s l1_s equals the net load toward the wall, up to the
+  //    solver tolerances (doc/theory.md §6: the Newton target, the
+  //    Uzawa tolerance on the change of v). The slider shares the vertical
+  //    load with the wall, so the wall's tangential force is not fixed by
+  //    statics and is not checked.
+  // 3. Coulomb's cone, to the bound of cone_bound() above.
+  // 4. Nested and merged agree to that bound plus the solutions' own
+  //    tolerance.
+  // 5. The wall has the zones step-3.prm promises.
+  // 6. The merged strategy is the cheaper one.
+  tutorial::Checks
+  ThresholdStrategies::check_results() const
+  {
     pcout << "\nChecks:\n";
     tutorial::Checks checks;
     checks(one_node <= 1e-8,
@@ -746,6 +838,14 @@ namespace Step3
              std::to_string(totals[1].newton_steps) + " < " +
              std::to_string(totals[0].newton_steps));
     return checks;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &parameters)
+  {
+    return ThresholdStrategies(parameters).run();
   }
 } // namespace Step3
 
