@@ -189,29 +189,95 @@ namespace Step4
   }
 
   // @sect3{The whole step}
-  tutorial::Checks
-  run(const Parameters &scene)
+  //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as its stages, one member function each, and members for what a later
+  // stage needs of an earlier one (the four runs and the load P).
+  class FrictionInHertz
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream pcout(std::cout, root);
+  public:
+    explicit FrictionInHertz(const Parameters &scene);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene();
+    void
+    solve_four_runs();
+    void
+    print_scene();
+    void
+    print_runs() const;
+    void
+    write_figure_data() const;
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints), whether it shows times, its
+    // friction coefficient and Poisson's ratio.
+    const Parameters  &scene;
+    const bool         root;
+    ConditionalOStream pcout;
+    const bool         timing;
+    double             F = 0., nu = 0.;
+
+    // The four runs and the load P of the first (of all four: the same
+    // traction on the same mesh).
+    std::vector<Run> runs;
+    double           P = 0.;
+  };
+
+
+  FrictionInHertz::FrictionInHertz(const Parameters &scene)
+      : scene(scene)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout, root)
+      , timing(scene.output.print_timing)
+  {}
+
+
+  // The four runs, the scene they share, the table and its figure's data,
+  // and the checks.
+  tutorial::Checks
+  FrictionInHertz::run()
+  {
+    check_scene();
+    solve_four_runs();
+    print_scene();
+    print_runs();
+    write_figure_data();
+    return check_results();
+  }
+
+
+  // The formulas of this step hold for the 2D half disc with Coulomb
+  // friction; anything else is refused with one message before a solve.
+  void
+  FrictionInHertz::check_scene()
+  {
     AssertThrow(scene.geometry.dimension == dim &&
                   scene.geometry.type == GeometryType::half_disc &&
                   scene.friction.law == "coulomb",
                 ExcMessage("step-4 needs the 2D half disc with Coulomb "
                            "friction."));
-    const bool   timing = scene.output.print_timing;
-    const double F      = std::stod(scene.friction.parameter);
-    const double nu     = scene.material.poissons_ratio;
+    F  = std::stod(scene.friction.parameter);
+    nu = scene.material.poissons_ratio;
     if (root)
       std::filesystem::create_directories(scene.output.directory);
 
     pcout << "step-4: friction in Hertz contact, Dundurs' beta ("
           << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
           << " MPI rank(s))\n\n";
+  }
 
-    // Four runs: without and with friction, at the prm's nu and nearly
-    // incompressible.
-    std::vector<Run> runs;
+
+  // Four runs: without and with friction, at the prm's nu and nearly
+  // incompressible.
+  void
+  FrictionInHertz::solve_four_runs()
+  {
     for (const double n : {nu, nearly_incompressible})
       for (const double f : {0., F})
         runs.push_back(solve(scene, n, f));
@@ -222,18 +288,23 @@ namespace Step4
         runs[i].change_a = with.edge_half_width / without.edge_half_width - 1.;
         runs[i].change_peak = with.max_pressure / without.max_pressure - 1.;
       }
+  }
 
-    // @sect4{The table}
-    //
-    // P from the load vector (the pressure on the flat top, integrated);
-    // Hertz's a and p0 from the scene's E, nu and R and that P
-    // (tutorial::Hertz). The half-width is measured with the edges
-    // extrapolated: near a smooth edge the pressure vanishes like a square
-    // root, so l1^2 is linear there (doc/theory.md §9). `change` is
-    // relative to the frictionless run at the same nu; c/a the stick zone
-    // over the contact zone.
+
+  // @sect4{The table}
+  //
+  // P from the load vector (the pressure on the flat top, integrated);
+  // Hertz's a and p0 from the scene's E, nu and R and that P
+  // (tutorial::Hertz). The half-width is measured with the edges
+  // extrapolated: near a smooth edge the pressure vanishes like a square
+  // root, so l1^2 is linear there (doc/theory.md §9). `change` is
+  // relative to the frictionless run at the same nu; c/a the stick zone
+  // over the contact zone.
+  void
+  FrictionInHertz::print_scene()
+  {
     const CycleResult &first = runs[0].result;
-    const double       P     = first.solve.normal_load;
+    P                        = first.solve.normal_load;
     pcout << "The half disc on a rigid plane: R = "
           << format("%g", tutorial::Hertz::radius_of(scene))
           << ", E = " << format("%g", scene.material.youngs_modulus)
@@ -241,7 +312,13 @@ namespace Step4
           << "  one graded mesh: " << first.mesh.n_cells << " cells, "
           << first.mesh.n_dofs << " DoFs, faces on the contact zone h_C = "
           << format("%.6f", runs[0].h_contact) << "\n\n";
+  }
 
+
+  // One row per run; each run's nodes go to its CSV file for plot.gp.
+  void
+  FrictionInHertz::print_runs() const
+  {
     pcout
       << "The four runs:\n"
       << "    nu  beta      F  Hertz a  Hertz p0  a (edges)    change  peak l1"
@@ -272,7 +349,13 @@ namespace Step4
               << (timing ? format("  (%.2f s)", r.time) : "") << "\n";
         write_nodes(r.nodes, scene.output.directory + "/" + r.name + ".csv");
       }
-    // for plot.gp: the file names and Hertz's curve of the first pair
+  }
+
+
+  // For plot.gp: the file names and Hertz's curve of the first pair.
+  void
+  FrictionInHertz::write_figure_data() const
+  {
     if (root)
       {
         const tutorial::Hertz hertz(scene, P);
@@ -282,8 +365,13 @@ namespace Step4
           << "a = " << hertz.a << "\np0 = " << hertz.p0 << "\nF = " << F
           << "\nnu = " << nu << "\nnu2 = " << nearly_incompressible << "\n";
       }
+  }
 
-    // @sect4{The checks}
+
+  // @sect4{The checks}
+  tutorial::Checks
+  FrictionInHertz::check_results() const
+  {
     pcout << "\nChecks:\n";
     tutorial::Checks checks;
     const double     uzawa_tolerance = scene.solver.uzawa_tolerance;
@@ -363,6 +451,14 @@ namespace Step4
              format("%.2f", nearly_incompressible) + " (" +
              format("%.1f", runs[1].change_a / runs[3].change_a) + " times)");
     return checks;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &scene)
+  {
+    return FrictionInHertz(scene).run();
   }
 } // namespace Step4
 
