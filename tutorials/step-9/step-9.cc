@@ -185,13 +185,78 @@ namespace Step9
   }
 
   // @sect3{The whole step}
-  tutorial::Checks
-  run(const Parameters &scene)
+  //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as its stages, one member function each, and members for what a later
+  // stage needs of an earlier one (the load, the runs and their rates).
+  class DegreeStudy
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    const bool         timing   = scene.output.print_timing;
-    const unsigned int n_cycles = scene.refinement.n_cycles;
+  public:
+    explicit DegreeStudy(const Parameters &scene);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene();
+    void
+    study_three_degrees();
+    void
+    print_rates();
+    void
+    study_locking();
+    void
+    write_figure_data() const;
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints), whether it shows times, and
+    // its number of meshes.
+    const Parameters  &scene;
+    const bool         root;
+    ConditionalOStream pcout;
+    const bool         timing;
+    const unsigned int n_cycles;
+
+    // The load P, the runs of the three degrees with their rates per DoF
+    // (the last two meshes', the fitted), and the two runs at nu = 0.49.
+    double              P = 0.;
+    std::vector<Run>    runs;
+    std::vector<double> last_rates, fitted_rates;
+    std::vector<Run>    locking;
+  };
+
+
+  DegreeStudy::DegreeStudy(const Parameters &scene)
+      : scene(scene)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout, root)
+      , timing(scene.output.print_timing)
+      , n_cycles(scene.refinement.n_cycles)
+  {}
+
+
+  // The three degrees and their rates, the locking test, the data for
+  // plot.gp and the checks.
+  tutorial::Checks
+  DegreeStudy::run()
+  {
+    check_scene();
+    study_three_degrees();
+    print_rates();
+    study_locking();
+    write_figure_data();
+    return check_results();
+  }
+
+
+  // The rates of this step are those of frictionless plane-strain Hertz on
+  // globally refined meshes; anything else is refused with one message
+  // before a solve.
+  void
+  DegreeStudy::check_scene()
+  {
     tutorial::require(
       scene.geometry.dimension == dim &&
         scene.geometry.type == GeometryType::half_disc &&
@@ -207,21 +272,25 @@ namespace Step9
     pcout << "step-9: higher-order elements ("
           << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
           << " MPI rank(s))\n\n";
+  }
 
-    // @sect4{Three degrees on the same meshes}
-    //
-    // FE_Q(k) for k = 1, 2, 3 on the scene's meshes: on one mesh FE_Q(2)
-    // has about 4 and FE_Q(3) about 9 times the DoFs of FE_Q(1), and as
-    // many more contact nodes per contact face (k per face in 2D). Each
-    // run's errors are measured against Hertz for the scene's own nu and
-    // load, so that `--set "Material/Poisson's ratio=..."` needs no other
-    // change; the scene's <Exact solution> entries serve a plain run of
-    // the dualcontact program.
-    const double          P = applied_load(scene);
+
+  // @sect4{Three degrees on the same meshes}
+  //
+  // FE_Q(k) for k = 1, 2, 3 on the scene's meshes: on one mesh FE_Q(2)
+  // has about 4 and FE_Q(3) about 9 times the DoFs of FE_Q(1), and as
+  // many more contact nodes per contact face (k per face in 2D). Each
+  // run's errors are measured against Hertz for the scene's own nu and
+  // load, so that `--set "Material/Poisson's ratio=..."` needs no other
+  // change; the scene's <Exact solution> entries serve a plain run of
+  // the dualcontact program.
+  void
+  DegreeStudy::study_three_degrees()
+  {
+    P = applied_load(scene);
     const tutorial::Hertz hertz(scene, P);
     Parameters            study = scene;
     set_exact_solution(study, hertz);
-    std::vector<Run> runs;
     for (const unsigned int k : {1u, 2u, 3u})
       runs.push_back(solve(study, k, n_cycles, "study_k" + std::to_string(k)));
 
@@ -235,15 +304,19 @@ namespace Step9
     for (const Run &r : runs)
       for (unsigned int c = 0; c < r.cycles.size(); ++c)
         pcout << row(r, c, timing) << "\n";
+  }
 
-    // The rates per DoF: between the last two meshes, and the least-squares
-    // slope over all of them. The README explains why they are about 1/2
-    // whatever the degree: the element that holds the edge of the zone has
-    // an error of order h there.
+
+  // The rates per DoF: between the last two meshes, and the least-squares
+  // slope over all of them. The README explains why they are about 1/2
+  // whatever the degree: the element that holds the edge of the zone has
+  // an error of order h there.
+  void
+  DegreeStudy::print_rates()
+  {
     pcout << "\nRates per DoF of the pressure error, s in e ~ N^(-s):\n"
           << "  k  last two meshes  all meshes (least squares)  smooth p: "
              "(k+1)/2\n";
-    std::vector<double> last_rates, fitted_rates;
     for (const Run &r : runs)
       {
         last_rates.push_back(
@@ -254,23 +327,27 @@ namespace Step9
               << format("%28.2f", fitted_rates.back())
               << format("%21.1f", (r.degree + 1.) / 2.) << "\n";
       }
+  }
 
-    // @sect4{Locking at nu = 0.49}
-    //
-    // The same scene at nu = 0.49, with Hertz's a and p0 for that nu (the
-    // load stays). Degree 1 on the finest mesh of the study against degree
-    // 2 on the mesh one refinement coarser: about the same DoFs. As nu ->
-    // 1/2 the bulk modulus lambda + 2 mu/3 grows without bound against mu,
-    // and a displacement field has to be nearly divergence-free to keep its
-    // energy finite. Few bilinear fields on a mesh are nearly divergence-
-    // free, many more biquadratic ones: the Q1 body is too stiff (it locks),
-    // and in contact too stiff means a narrower zone and a higher peak,
-    // since a ~ E*^(-1/2) and p0 ~ E*^(1/2).
+
+  // @sect4{Locking at nu = 0.49}
+  //
+  // The same scene at nu = 0.49, with Hertz's a and p0 for that nu (the
+  // load stays). Degree 1 on the finest mesh of the study against degree
+  // 2 on the mesh one refinement coarser: about the same DoFs. As nu ->
+  // 1/2 the bulk modulus lambda + 2 mu/3 grows without bound against mu,
+  // and a displacement field has to be nearly divergence-free to keep its
+  // energy finite. Few bilinear fields on a mesh are nearly divergence-
+  // free, many more biquadratic ones: the Q1 body is too stiff (it locks),
+  // and in contact too stiff means a narrower zone and a higher peak,
+  // since a ~ E*^(-1/2) and p0 ~ E*^(1/2).
+  void
+  DegreeStudy::study_locking()
+  {
     Parameters nearly_incompressible              = scene;
     nearly_incompressible.material.poissons_ratio = locking_nu;
     const tutorial::Hertz hertz_049(nearly_incompressible, P);
     set_exact_solution(nearly_incompressible, hertz_049);
-    std::vector<Run> locking;
     locking.push_back(solve(nearly_incompressible, 1, n_cycles, "locking_k1"));
     locking.push_back(
       solve(nearly_incompressible, 2, n_cycles - 1, "locking_k2"));
@@ -282,11 +359,16 @@ namespace Step9
           << header(timing) << "\n";
     for (const Run &r : locking)
       pcout << row(r, r.cycles.size() - 1, timing) << "\n";
+  }
 
-    // @sect4{The figure's data}
-    //
-    // One row per mesh of every run: plot.gp draws the pressure error
-    // against the DoFs (pressure_error.svg).
+
+  // @sect4{The figure's data}
+  //
+  // One row per mesh of every run: plot.gp draws the pressure error
+  // against the DoFs (pressure_error.svg).
+  void
+  DegreeStudy::write_figure_data() const
+  {
     if (root)
       {
         std::ofstream csv(scene.output.directory + "/degrees.csv");
@@ -308,11 +390,16 @@ namespace Step9
                     << '\n';
               }
       }
+  }
 
-    // @sect4{The checks}
-    //
-    // What the README claims, on the step's own numbers; the README's table
-    // "The checks" gives each bound's reason.
+
+  // @sect4{The checks}
+  //
+  // What the README claims, on the step's own numbers; the README's table
+  // "The checks" gives each bound's reason.
+  tutorial::Checks
+  DegreeStudy::check_results() const
+  {
     pcout << "\nChecks:\n";
     tutorial::Checks checks;
     // 1. Every degree converges: its pressure error falls from each mesh to
@@ -362,6 +449,14 @@ namespace Step9
                " %) is not smaller than degree 2's on about as many DoFs");
     }
     return checks;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &scene)
+  {
+    return DegreeStudy(scene).run();
   }
 } // namespace Step9
 
