@@ -27,7 +27,7 @@
 //
 // The library's Problem class (the whole solver, one refinement cycle after
 // the other, and the record of each), its parameters, and the tutorials'
-// tools (the CSV reader, the checks, main()).
+// tools (the CSV reader of csv_table.h, the checks, main()).
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
@@ -46,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/csv_table.h"
 #include "../common/tutorial_tools.h"
 
 namespace Step10

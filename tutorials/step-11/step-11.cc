@@ -55,6 +55,7 @@
 #include <utility>
 #include <vector>
 
+#include "../common/csv_table.h"
 #include "../common/tutorial_tools.h"
 
 namespace Step11
