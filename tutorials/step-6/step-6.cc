@@ -37,10 +37,12 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "../common/csv_table.h"
 #include "../common/tutorial_tools.h"
 
 namespace Step6
@@ -331,43 +333,127 @@ namespace Step6
 
   // @sect3{The whole step}
   //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as its stages, one member function each, and members for what a later
+  // stage needs of an earlier one (the arc's lengths, the solved problem,
+  // the figures the checks judge).
+  class CylinderObstacle
+  {
+  public:
+    explicit CylinderObstacle(const Parameters &parameters);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene() const;
+    void
+    solve_scene();
+    Hertz
+    hertz_for_last_cycle() const;
+    void
+    compare_zones() const;
+    void
+    compare_along_contact_boundary();
+    void
+    compare_beneath_contact();
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints) and the output folder.
+    const Parameters  &parameters;
+    const MPI_Comm     comm;
+    const bool         root;
+    ConditionalOStream pcout;
+    const std::string &directory;
+
+    // The arc's lengths per refinement, the library's problem and its
+    // screen output (kept for screen.log), and the figures of the pressure
+    // along Gamma_C and of the probes.
+    std::vector<ArcLengths>            arc;
+    std::ostringstream                 log;
+    std::unique_ptr<ContactProblem<2>> problem;
+    PressureFigures                    pressure;
+    ProbeFigures                       probes;
+  };
+
+
+  CylinderObstacle::CylinderObstacle(const Parameters &parameters)
+      : parameters(parameters)
+      , comm(MPI_COMM_WORLD)
+      , root(Utilities::MPI::this_mpi_process(comm) == 0)
+      , pcout(std::cout, root)
+      , directory(parameters.output.directory)
+  {}
+
+
   // The mesh first; then the scene, solved by the library's
   // ContactProblem::run(): cycles of setup, assembly, contact solve,
   // postprocessing and output, as in steps 1-5. Its screen output goes to
   // screen.log in the output folder; the screen shows this program's
   // tables. Then the comparisons, and the checks.
   tutorial::Checks
-  run(const Parameters &parameters)
+  CylinderObstacle::run()
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
-    ConditionalOStream pcout(std::cout, root);
+    check_scene();
+    arc = describe_mesh(pcout, parameters, 4);
+    solve_scene();
+    compare_zones();
+    compare_along_contact_boundary();
+    compare_beneath_contact();
+    return check_results();
+  }
+
+
+  // The comparisons of this step need a 2D mesh file pressed by a
+  // cylinder without friction; anything else is refused with one message
+  // before a solve.
+  void
+  CylinderObstacle::check_scene() const
+  {
     AssertThrow(parameters.geometry.dimension == 2 &&
                   parameters.geometry.type == GeometryType::mesh_file &&
                   parameters.obstacle.type == "cylinder" &&
                   parameters.friction.law == "none",
                 ExcMessage("step-6 needs a 2D scene on a mesh file with a "
                            "cylinder obstacle and no friction"));
+  }
 
-    const std::vector<ArcLengths> arc = describe_mesh(pcout, parameters, 4);
 
-    std::ostringstream log;
-    ContactProblem<2>  problem(parameters, comm, log);
+  // The scene as the library solves it, every cycle; its screen output
+  // goes to screen.log.
+  void
+  CylinderObstacle::solve_scene()
+  {
+    problem = std::make_unique<ContactProblem<2>>(parameters, comm, log);
     // parameters.prm in the output folder: the entries this run used
-    problem.record_parameters(parameters.parameter_file);
-    problem.run();
-    const std::string &directory = parameters.output.directory;
+    problem->record_parameters(parameters.parameter_file);
+    problem->run();
     if (root)
       std::ofstream(directory + "/screen.log") << log.str();
+  }
 
-    // The contact zone of every cycle against Hertz for its force. a is
-    // the half-width of the nodes in contact, their edges extrapolated to
-    // where the pressure would reach zero (doc/theory.md §9).
+
+  // Hertz for the force the last cycle measured.
+  Hertz
+  CylinderObstacle::hertz_for_last_cycle() const
+  {
+    return Hertz(parameters, obstacle_force_y(problem->results().back()));
+  }
+
+
+  // The contact zone of every cycle against Hertz for its force. a is
+  // the half-width of the nodes in contact, their edges extrapolated to
+  // where the pressure would reach zero (doc/theory.md §9).
+  void
+  CylinderObstacle::compare_zones() const
+  {
     pcout << "\nThe contact zone against Hertz for the measured force P "
              "(relative errors):\n"
           << "cycle   DoFs  nodes          P          a    error"
              "          p0    error\n";
-    for (const CycleResult &r : problem.results())
+    for (const CycleResult &r : problem->results())
       {
         const Hertz hertz(parameters, obstacle_force_y(r));
         pcout << std::setw(5) << r.mesh.cycle << std::setw(7) << r.mesh.n_dofs
@@ -378,8 +464,7 @@ namespace Step6
               << format("%12.4f", r.zone.max_pressure)
               << format("%+9.1e", r.zone.max_pressure / hertz.p0 - 1.) << "\n";
       }
-    const CycleResult &last = problem.results().back();
-    const Hertz        hertz(parameters, obstacle_force_y(last));
+    const Hertz hertz = hertz_for_last_cycle();
     pcout << "Hertz for the last cycle's P = " << format("%.5f", hertz.P)
           << ": a = " << format("%.6f", hertz.a)
           << ", p0 = " << format("%.4f", hertz.p0) << "\n";
@@ -387,17 +472,24 @@ namespace Step6
       std::ofstream(directory + "/hertz.gp")
         << "a = " << hertz.a << "\np0 = " << hertz.p0
         << "\nnu = " << parameters.material.poissons_ratio << "\n";
+  }
 
-    // Every rank reads the file rank 0 wrote; the barrier makes sure it is
-    // complete.
+
+  // The pressure at the nodes of the last cycle against Hertz's. Every
+  // rank reads the file rank 0 wrote; the barrier makes sure it is
+  // complete.
+  void
+  CylinderObstacle::compare_along_contact_boundary()
+  {
+    const CycleResult &last  = problem->results().back();
+    const Hertz        hertz = hertz_for_last_cycle();
     MPI_Barrier(comm);
     char name[32];
     std::snprintf(name, sizeof(name), "/contact_%02u.csv", last.mesh.cycle);
-    const PressureFigures pressure =
-      compare_pressure(read_contact_csv(directory + name),
-                       hertz,
-                       directory + "/pressure.csv",
-                       root);
+    pressure = compare_pressure(read_contact_csv(directory + name),
+                                hertz,
+                                directory + "/pressure.csv",
+                                root);
     pcout << "\nThe pressure along Gamma_C (contact" << (name + 8) << ": "
           << pressure.n_rows << " nodes, " << pressure.n_in_contact
           << " in contact):\n"
@@ -405,21 +497,35 @@ namespace Step6
           << format("%.2e", pressure.max_difference)
           << " p0, relative L2 error " << format("%.2e", pressure.l2_error)
           << "\n";
+  }
 
-    const ProbeFigures probes =
-      compare_probes(pcout,
-                     problem.get_probes(),
-                     last.mesh.cycle,
-                     hertz,
-                     parameters.material.poissons_ratio,
-                     directory + "/axis.csv",
-                     root);
+
+  // The stresses at the probes beneath the contact against McEwen's.
+  void
+  CylinderObstacle::compare_beneath_contact()
+  {
+    const CycleResult &last  = problem->results().back();
+    const Hertz        hertz = hertz_for_last_cycle();
+    probes                   = compare_probes(pcout,
+                            problem->get_probes(),
+                            last.mesh.cycle,
+                            hertz,
+                            parameters.material.poissons_ratio,
+                            directory + "/axis.csv",
+                            root);
     pcout << "  largest difference " << format("%.4f", probes.worst)
           << " p0; largest tau of the probes " << format("%.4f", probes.tau_max)
           << " p0 (McEwen at the same depths "
           << format("%.4f", probes.tau_peak) << " p0)\n";
+  }
 
-    // @sect4{The checks}
+
+  // @sect4{The checks}
+  tutorial::Checks
+  CylinderObstacle::check_results() const
+  {
+    const CycleResult &last  = problem->results().back();
+    const Hertz        hertz = hertz_for_last_cycle();
     pcout << "\nChecks:\n";
     tutorial::Checks checks;
 
@@ -462,6 +568,14 @@ namespace Step6
            "the probes: McEwen's stresses within 0.03 p0, the largest shear "
            "within 2 %");
     return checks;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &parameters)
+  {
+    return CylinderObstacle(parameters).run();
   }
 } // namespace Step6
 
