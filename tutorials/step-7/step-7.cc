@@ -36,10 +36,12 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "../common/csv_table.h"
 #include "../common/tutorial_tools.h"
 
 namespace Step7
@@ -240,42 +242,120 @@ namespace Step7
 
   // @sect3{The whole step}
   //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as its stages, one member function each, and members for what a later
+  // stage needs of an earlier one (the solved problem, the figures of the
+  // last cycle's nodes).
+  class HalfBall
+  {
+  public:
+    explicit HalfBall(const Parameters &parameters);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    check_scene() const;
+    void
+    solve_scene();
+    CattaneoMindlin
+    exact_for_last_cycle() const;
+    void
+    compare_zones() const;
+    void
+    compare_nodes();
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints) and the output folder.
+    const Parameters  &parameters;
+    const MPI_Comm     comm;
+    const bool         root;
+    ConditionalOStream pcout;
+    const std::string &directory;
+
+    // The library's problem, its screen output (kept for screen.log), and
+    // the figures of the last cycle's nodes.
+    std::ostringstream                 log;
+    std::unique_ptr<ContactProblem<3>> problem;
+    ZoneFigures                        zone;
+  };
+
+
+  HalfBall::HalfBall(const Parameters &parameters)
+      : parameters(parameters)
+      , comm(MPI_COMM_WORLD)
+      , root(Utilities::MPI::this_mpi_process(comm) == 0)
+      , pcout(std::cout, root)
+      , directory(parameters.output.directory)
+  {}
+
+
   // The disc first; then the scene, solved by the library's
   // ContactProblem::run() (screen output to screen.log in the output
   // folder); then, per cycle, the zone against the formulas for that
   // cycle's loads, and on the last cycle the nodes against the profiles.
   tutorial::Checks
-  run(const Parameters &parameters)
+  HalfBall::run()
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
-    ConditionalOStream pcout(std::cout, root);
+    check_scene();
+    show_the_disc(pcout);
+    solve_scene();
+    compare_zones();
+    compare_nodes();
+    return check_results();
+  }
+
+
+  // The formulas of this step hold for the 3D half ball with Coulomb
+  // friction; anything else is refused with one message before a solve.
+  void
+  HalfBall::check_scene() const
+  {
     AssertThrow(parameters.geometry.dimension == 3 &&
                   parameters.geometry.type == GeometryType::half_disc &&
                   parameters.friction.law == "coulomb",
                 ExcMessage("step-7 needs the 3D half ball with Coulomb "
                            "friction"));
+  }
 
-    show_the_disc(pcout);
 
-    std::ostringstream log;
-    ContactProblem<3>  problem(parameters, comm, log);
+  // The scene as the library solves it, every cycle; its screen output
+  // goes to screen.log.
+  void
+  HalfBall::solve_scene()
+  {
+    problem = std::make_unique<ContactProblem<3>>(parameters, comm, log);
     // parameters.prm in the output folder: the entries this run used
-    problem.record_parameters(parameters.parameter_file);
-    problem.run();
-    const std::string &directory = parameters.output.directory;
+    problem->record_parameters(parameters.parameter_file);
+    problem->run();
     if (root)
       std::ofstream(directory + "/screen.log") << log.str();
+  }
 
-    // The contact radius a is measured on two lines of nodes through the
-    // centre of the zone, its edges extrapolated from l1^2; the stick
-    // radius c on the same lines, each end half-way between the last
-    // sticking and the first slipping node (doc/theory.md §9).
+
+  // Hertz and Cattaneo-Mindlin for the loads of the last cycle.
+  CattaneoMindlin
+  HalfBall::exact_for_last_cycle() const
+  {
+    const auto [P, Q] = loads(problem->results().back());
+    return CattaneoMindlin(parameters, P, Q);
+  }
+
+
+  // The contact radius a is measured on two lines of nodes through the
+  // centre of the zone, its edges extrapolated from l1^2; the stick
+  // radius c on the same lines, each end half-way between the last
+  // sticking and the first slipping node (doc/theory.md §9).
+  void
+  HalfBall::compare_zones() const
+  {
     pcout << "The zone on each mesh against Hertz and Cattaneo-Mindlin for "
              "its loads P, Q (relative errors):\n"
           << "cycle   DoFs  stick  slip         P         Q  Q/(F P)"
              "         a    error         c    error\n";
-    for (const CycleResult &r : problem.results())
+    for (const CycleResult &r : problem->results())
       {
         const auto [P, Q] = loads(r);
         const CattaneoMindlin exact(parameters, P, Q);
@@ -289,9 +369,7 @@ namespace Step7
               << format("%+9.1e", r.zone.stick_half_width / exact.c - 1.)
               << "\n";
       }
-    const CycleResult &last = problem.results().back();
-    const auto [P, Q]       = loads(last);
-    const CattaneoMindlin exact(parameters, P, Q);
+    const CattaneoMindlin exact = exact_for_last_cycle();
     pcout << "Hertz and Cattaneo-Mindlin for the last cycle: a = "
           << format("%.5f", exact.a) << ", p0 = " << format("%.3f", exact.p0)
           << ", c = " << format("%.5f", exact.c) << "\n";
@@ -299,13 +377,20 @@ namespace Step7
       std::ofstream(directory + "/exact.gp")
         << "a = " << exact.a << "\np0 = " << exact.p0 << "\nc = " << exact.c
         << "\nF = " << exact.F << "\n";
+  }
 
-    // Every rank reads the file rank 0 wrote; the barrier makes sure it is
-    // complete.
+
+  // Every rank reads the file rank 0 wrote; the barrier makes sure it is
+  // complete.
+  void
+  HalfBall::compare_nodes()
+  {
+    const CycleResult    &last  = problem->results().back();
+    const CattaneoMindlin exact = exact_for_last_cycle();
     MPI_Barrier(comm);
     char name[32];
     std::snprintf(name, sizeof(name), "/contact_%02u.csv", last.mesh.cycle);
-    const ZoneFigures zone =
+    zone =
       compare_zone(read_contact_csv(directory + name), exact, directory, root);
     pcout << "\nThe nodes of the last cycle (contact" << (name + 8)
           << "): " << zone.n_stick << " stick, " << zone.n_slip << " slip\n"
@@ -322,8 +407,16 @@ namespace Step7
           << format("%+.1e", last.zone.max_pressure / exact.p0 - 1.)
           << "); the contact element at r = c: "
           << format("%.5f", zone.element_at_c) << "\n";
+  }
 
-    // @sect4{The checks}
+
+  // @sect4{The checks}
+  tutorial::Checks
+  HalfBall::check_results() const
+  {
+    const CycleResult &last     = problem->results().back();
+    const auto [P, Q]           = loads(last);
+    const CattaneoMindlin exact = exact_for_last_cycle();
     pcout << "\nChecks:\n";
     tutorial::Checks checks;
 
@@ -370,6 +463,14 @@ namespace Step7
            "the traction along x within 20 % of Cattaneo-Mindlin's (relative "
            "L2)");
     return checks;
+  }
+
+
+  // The step as run_tutorial() calls it: the program on the scene.
+  tutorial::Checks
+  run(const Parameters &parameters)
+  {
+    return HalfBall(parameters).run();
   }
 } // namespace Step7
 
