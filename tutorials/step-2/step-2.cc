@@ -44,6 +44,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -520,19 +521,85 @@ namespace Step2
 
   // @sect3{The whole step}
   //
+  // The program in the shape of deal.II's steps: a class whose run() reads
+  // as its stages, one member function each, and members for what a later
+  // stage needs of an earlier one (the problem and its system, v, the
+  // agreement of each proximal step).
+  template <int dim>
+  class ProximalStepByHand
+  {
+  public:
+    explicit ProximalStepByHand(const Parameters &parameters);
+
+    tutorial::Checks
+    run();
+
+  private:
+    void
+    set_up_system();
+    void
+    open_figure_file();
+    void
+    check_free_contact_dofs();
+    void
+    compare_proximal_step(const unsigned int k, const std::string &title);
+    void
+    update_multipliers();
+    tutorial::Checks
+    check_results() const;
+
+    // The scene, the screen (rank 0 prints) and whether it shows times.
+    const Parameters  &parameters;
+    const MPI_Comm     comm;
+    ConditionalOStream pcout;
+    const bool         timing;
+
+    // The library's problem, the system it set up (K, M, b, r, chi), v and
+    // v^k, every Newton iterate's row for the figure (rank 0), and the
+    // agreement of each proximal step.
+    ContactProblem<dim>           problem;
+    std::optional<ContactSystem>  system;
+    TrilinosWrappers::MPI::Vector v, v_previous;
+    std::ofstream                 csv;
+    std::vector<Agreement>        agreements;
+  };
+
+
+  template <int dim>
+  ProximalStepByHand<dim>::ProximalStepByHand(const Parameters &parameters)
+      : parameters(parameters)
+      , comm(MPI_COMM_WORLD)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+      , timing(parameters.output.print_timing)
+      , problem(parameters, comm, std::cout)
+  {}
+
+
   // The library's phases up to the solve, as in step-1; then proximal step
   // k = 1 from v = 0 with l1 = 0, the multiplier update of step-1, and
   // proximal step k = 2 from there; then the checks.
   template <int dim>
   tutorial::Checks
-  run(const Parameters &parameters)
+  ProximalStepByHand<dim>::run()
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(comm) == 0);
-    const bool         timing = parameters.output.print_timing;
+    set_up_system();
+    open_figure_file();
+    check_free_contact_dofs();
+    // Proximal step 1: v^k = v = 0, l1 = 0.
+    compare_proximal_step(1, "Proximal step 1 (from v = 0, l1 = 0)");
+    update_multipliers();
+    compare_proximal_step(2, "Proximal step 2 (from v^1, l1^1)");
+    return check_results();
+  }
 
-    ContactProblem<dim> problem(parameters, comm, std::cout);
+
+  // The library's phases up to the solve, as in step-1: the mesh, the
+  // degrees of freedom and contact nodes, the matrices, r and chi; v
+  // starts from zero.
+  template <int dim>
+  void
+  ProximalStepByHand<dim>::set_up_system()
+  {
     problem.make_grid();
     problem.get_report().print_scene();
     const MeshRecord mesh = problem.setup_system(0);
@@ -544,13 +611,17 @@ namespace Step2
           << " contact nodes; r = " << format("%.6g", constants.r)
           << ", chi = " << format("%.6g", constants.chi) << "\n";
 
-    const ContactSystem           system  = problem.contact_system();
-    ContactSet<dim>              &contact = problem.contact();
-    TrilinosWrappers::MPI::Vector v       = problem.initial_displacement();
-    TrilinosWrappers::MPI::Vector v_previous(v);
+    system.emplace(problem.contact_system());
+    v          = problem.initial_displacement();
+    v_previous = v;
+  }
 
-    // Every Newton iterate of both iterations, for the figure (rank 0).
-    std::ofstream csv;
+
+  // Every Newton iterate of both iterations, for the figure (rank 0).
+  template <int dim>
+  void
+  ProximalStepByHand<dim>::open_figure_file()
+  {
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::filesystem::create_directories(parameters.output.directory);
@@ -559,24 +630,38 @@ namespace Step2
                "active,step_length_hand,step_length_library,v_difference\n";
         csv.precision(10);
       }
+  }
 
-    // The contact terms go into H and G at the node's own DoFs: check that
-    // none of them is constrained (true of every scene whose contact
-    // boundary has no Dirichlet or slider part).
-    bool free_nodes = true;
+
+  // The contact terms go into H and G at the node's own DoFs: check that
+  // none of them is constrained (true of every scene whose contact
+  // boundary has no Dirichlet or slider part).
+  template <int dim>
+  void
+  ProximalStepByHand<dim>::check_free_contact_dofs()
+  {
+    const ContactSet<dim> &contact    = problem.contact();
+    bool                   free_nodes = true;
     for (const ContactNode<dim> &node : contact.nodes)
       for (const types::global_dof_index dof : node.dofs)
-        free_nodes &= !system.homogeneous_constraints.is_constrained(dof);
+        free_nodes &= !system->homogeneous_constraints.is_constrained(dof);
     AssertThrow(Utilities::MPI::min(free_nodes ? 1 : 0, comm) == 1,
                 ExcMessage("step-2 adds the contact terms at the nodes' own "
                            "DoFs: no contact DoF may be constrained."));
+  }
 
-    // Proximal step 1: v^k = v = 0, l1 = 0.
-    std::vector<Agreement> agreements;
-    agreements.push_back(compare(1,
-                                 "Proximal step 1 (from v = 0, l1 = 0)",
-                                 system,
-                                 contact,
+
+  // Proximal step k from v^k = v_previous, by hand and by the library
+  // (compare() above); v gets the hand's minimiser.
+  template <int dim>
+  void
+  ProximalStepByHand<dim>::compare_proximal_step(const unsigned int k,
+                                                 const std::string &title)
+  {
+    agreements.push_back(compare(k,
+                                 title,
+                                 *system,
+                                 problem.contact(),
                                  v_previous,
                                  v,
                                  problem.linear_solver(),
@@ -584,41 +669,43 @@ namespace Step2
                                  timing,
                                  pcout,
                                  csv));
+  }
 
-    // The multiplier update of step-1: l1_s <- (l1_s + r (v_n(s) - g0_s))^+,
-    // the pressure v^1 felt; then proximal step 2 from v^1 with it.
+
+  // The multiplier update of step-1: l1_s <- (l1_s + r (v_n(s) - g0_s))^+,
+  // the pressure v^1 felt; then proximal step 2 from v^1 with it.
+  template <int dim>
+  void
+  ProximalStepByHand<dim>::update_multipliers()
+  {
+    ContactSet<dim>        &contact   = problem.contact();
     types::global_dof_index n_pressed = 0;
     for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
       {
         contact.l1[s] =
           std::max(0.,
                    contact.l1[s] +
-                     system.r * (contact.normal_displacement(v, s) -
-                                 contact.nodes[s].gap0));
+                     system->r * (contact.normal_displacement(v, s) -
+                                  contact.nodes[s].gap0));
         n_pressed += (contact.l1[s] > 0.);
       }
     pcout << "\nMultiplier update: " << Utilities::MPI::sum(n_pressed, comm)
           << " nodes with l1 > 0\n";
     v_previous = v;
-    agreements.push_back(compare(2,
-                                 "Proximal step 2 (from v^1, l1^1)",
-                                 system,
-                                 contact,
-                                 v_previous,
-                                 v,
-                                 problem.linear_solver(),
-                                 parameters.solver,
-                                 timing,
-                                 pcout,
-                                 csv));
+  }
 
-    // @sect4{The checks}
-    //
-    // The two iterations do the same arithmetic in the same order except
-    // the line search (a different algorithm for the same root), so every
-    // figure must agree to round-off: `agreement` = 1e-10 relative, with
-    // room for the line search's last digits. Each check prints a line;
-    // main() ends with one message naming the failed ones and exit status 1.
+
+  // @sect4{The checks}
+  //
+  // The two iterations do the same arithmetic in the same order except
+  // the line search (a different algorithm for the same root), so every
+  // figure must agree to round-off: `agreement` = 1e-10 relative, with
+  // room for the line search's last digits. Each check prints a line;
+  // main() ends with one message naming the failed ones and exit status 1.
+  template <int dim>
+  tutorial::Checks
+  ProximalStepByHand<dim>::check_results() const
+  {
     Agreement worst;
     for (const Agreement &a : agreements)
       {
@@ -644,6 +731,15 @@ namespace Step2
             format("%.1e", worst.iterate) + ", final v " +
             format("%.1e", worst.final_v) + ")");
     return check;
+  }
+
+
+  // The step as main() calls it: the program on the scene.
+  template <int dim>
+  tutorial::Checks
+  run(const Parameters &parameters)
+  {
+    return ProximalStepByHand<dim>(parameters).run();
   }
 } // namespace Step2
 
