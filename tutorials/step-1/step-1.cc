@@ -434,7 +434,7 @@ namespace Step1
     void
     solve_detailed();
     Hertz
-    hertz() const;
+    hertz_for_load() const;
     void
     compare_with_hertz() const;
     void
@@ -520,7 +520,7 @@ namespace Step1
   // Hertz for the load of the detailed solve (the whole disc's).
   template <int dim>
   Hertz
-  HertzContact<dim>::hertz() const
+  HertzContact<dim>::hertz_for_load() const
   {
     return Hertz(parameters, symmetry * main.load);
   }
@@ -531,7 +531,7 @@ namespace Step1
   void
   HertzContact<dim>::compare_with_hertz() const
   {
-    const Hertz hertz    = this->hertz();
+    const Hertz hertz    = hertz_for_load();
     const auto  relative = [](const double x, const double exact) {
       return format("%+.2e", x / exact - 1.);
     };
@@ -564,7 +564,7 @@ namespace Step1
   void
   HertzContact<dim>::write_pressure_profile() const
   {
-    const Hertz hertz = this->hertz();
+    const Hertz hertz = hertz_for_load();
     if (root)
       {
         std::ofstream csv(directory + "pressure.csv");

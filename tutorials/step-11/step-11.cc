@@ -604,7 +604,7 @@ end
     void
     solve_hertz_pairs();
     void
-    compare_with_hertz_table();
+    compare_pairs_with_hertz();
     void
     solve_shear_cycle();
     void
@@ -669,7 +669,7 @@ end
     carry_uniform_pressure();
     run_patch_test();
     solve_hertz_pairs();
-    compare_with_hertz_table();
+    compare_pairs_with_hertz();
     solve_shear_cycle();
     compare_shear_with_masing();
     balance_cycle_energy();
@@ -999,7 +999,7 @@ end
   // one row per mesh; the checks look at the last mesh, at the error's fall
   // under halving, and at the forces.
   void
-  TwoBodies::compare_with_hertz_table()
+  TwoBodies::compare_pairs_with_hertz()
   {
     pcout << "  pair                  cycle   DoFs  nodes  facing none        "
              "P       a       p0     h_C    peak   a_m - a  (h_C)   p L2 "
