@@ -350,8 +350,9 @@ namespace Step1
   // The library's ContactProblem::run() calls solve(), which runs the
   // threshold iteration around UzawaIteration::solve(). For a frictionless
   // scene the threshold iteration has nothing to do, and what remains is
-  // the loop we write here. With `verbose` the function prints the scene and
-  // one line per Uzawa step, and writes the solution for ParaView.
+  // the loop of uzawa_iteration() above; this function sets up the problem
+  // around it and measures the result. With `verbose` it prints the scene
+  // and one line per Uzawa step, and writes the solution for ParaView.
   template <int dim>
   ContactSolve
   solve_contact(const Parameters &parameters, const bool verbose)
