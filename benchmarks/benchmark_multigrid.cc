@@ -43,8 +43,9 @@
 //   hanging nodes resolved by MatrixFree), chi M as a diagonal and C as a
 //   list of entries (condensed onto the masters of hanging nodes, as the
 //   program condenses them), on the active mesh and on each level; the
-//   load and the lumped mass by assemble_load() below (the load and mass
-//   integrals of the library's assemble_elasticity(), without K);
+//   load and the lumped mass by assemble_load() below (the library's
+//   CellLoads: the load and mass integrals of assemble_elasticity(),
+//   without K);
 //   LinearAlgebra::distributed::Vector throughout, and CG without a
 //   preconditioner on the coarsest level.
 // --set overrides an entry of the scene, as for the program (e.g. --set
@@ -100,6 +101,7 @@
 #include <deal.II/multigrid/mg_transfer_matrix_free.h>
 #include <deal.II/multigrid/multigrid.h>
 
+#include <dualcontact/cell_loads.h>
 #include <dualcontact/elasticity.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/lumped_mass.h>
@@ -132,12 +134,12 @@ namespace
 
   /**
    * The load b = int f.v + int_{Gamma_N} T.v (only the loads the scene has)
-   * and the lumped mass (the row sums of int u.v), the same integrals as
-   * the library's assemble_elasticity(), without K: the right-hand side and
-   * M of the matrix-free solve. The constraints are homogeneous (hanging
-   * nodes), so there is no lifting of prescribed values to assemble. The
-   * vectors have the locally owned DoFs and ghosts for every DoF the
-   * constraints write to.
+   * and the lumped mass (the row sums of int u.v), each cell's by the
+   * library's CellLoads, the terms assemble_elasticity() assembles besides
+   * K: the right-hand side and M of the matrix-free solve. The constraints
+   * are homogeneous (hanging nodes), so there is no lifting of prescribed
+   * values to assemble. The vectors have the locally owned DoFs and ghosts
+   * for every DoF the constraints write to.
    */
   template <int dim>
   void
@@ -150,66 +152,22 @@ namespace
   {
     Assert(!constraints.has_inhomogeneities(),
            ExcMessage("assemble_load() assembles no lifting"));
-    const FiniteElement<dim> &fe     = dof_handler.get_fe();
-    const unsigned int        n_dofs = fe.n_dofs_per_cell();
-    const UpdateFlags         flags =
-      update_values | update_quadrature_points | update_JxW_values;
-    FEValues<dim>     fe_values(mapping, fe, QGauss<dim>(fe.degree + 1), flags);
-    FEFaceValues<dim> fe_face_values(mapping,
-                                     fe,
-                                     QGauss<dim - 1>(fe.degree + 1),
-                                     flags);
-    const Function<dim>               *body_force = scene.body_force();
-    const std::set<types::boundary_id> traction_ids =
-      scene.ids_with(dualcontact::BoundaryCondition::traction);
-    std::vector<dealii::Vector<double>> force_values(
-      fe_values.n_quadrature_points, dealii::Vector<double>(dim)),
-      traction_values(fe_face_values.n_quadrature_points,
-                      dealii::Vector<double>(dim));
-    dealii::Vector<double>               cell_load(n_dofs), cell_mass(n_dofs);
-    std::vector<types::global_dof_index> indices(n_dofs);
-
-    // int g.phi_i over the cell or face `values` was reinit'ed on
-    const auto add_load = [&](const FEValuesBase<dim>                   &values,
-                              const std::vector<dealii::Vector<double>> &g) {
-      for (const unsigned int q : values.quadrature_point_indices())
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          cell_load(i) += g[q](fe.system_to_component_index(i).first) *
-                          values.shape_value(i, q) * values.JxW(q);
-    };
-
+    dualcontact::CellLoads<dim>          cell_loads(mapping,
+                                           dof_handler.get_fe(),
+                                           scene);
+    std::vector<types::global_dof_index> indices(
+      dof_handler.get_fe().n_dofs_per_cell());
     load = 0.;
     mass = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
-          cell_load = 0.;
-          cell_mass = 0.;
-          // the row sum of int u.v is int phi_i: the shape functions of a
-          // component sum to one
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              cell_mass(i) += fe_values.shape_value(i, q) * fe_values.JxW(q);
-          if (body_force != nullptr)
-            {
-              body_force->vector_value_list(fe_values.get_quadrature_points(),
-                                            force_values);
-              add_load(fe_values, force_values);
-            }
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && traction_ids.count(face->boundary_id()))
-              if (const Function<dim> *traction =
-                    scene.traction(face->boundary_id()))
-                {
-                  fe_face_values.reinit(cell, face);
-                  traction->vector_value_list(
-                    fe_face_values.get_quadrature_points(), traction_values);
-                  add_load(fe_face_values, traction_values);
-                }
+          cell_loads.reinit(cell, true);
           cell->get_dof_indices(indices);
-          constraints.distribute_local_to_global(cell_load, indices, load);
-          constraints.distribute_local_to_global(cell_mass, indices, mass);
+          constraints.distribute_local_to_global(cell_loads.rhs, indices, load);
+          constraints.distribute_local_to_global(cell_loads.mass,
+                                                 indices,
+                                                 mass);
         }
     load.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);

@@ -154,6 +154,375 @@ namespace dualcontact
         std::min_element(cycle.begin(), cycle.begin() + n) - cycle.begin();
       return cycle[(first + 1) % n] < cycle[(first + n - 1) % n];
     }
+
+    /**
+     * The index of a node tag in MshContents::node_tags: by tag if the tags
+     * are dense (as Gmsh numbers them), else hashed.
+     */
+    class NodeIndex
+    {
+    public:
+      explicit NodeIndex(const std::vector<int> &tags)
+      {
+        const int largest =
+          tags.empty() ? 0 : *std::max_element(tags.begin(), tags.end());
+        is_dense = static_cast<std::size_t>(largest) <= 8 * tags.size() + 1024;
+        if (is_dense)
+          {
+            dense.assign(largest + 1, 0);
+            for (unsigned int i = 0; i < tags.size(); ++i)
+              dense[tags[i]] = i;
+          }
+        else
+          for (unsigned int i = 0; i < tags.size(); ++i)
+            sparse.emplace(tags[i], i);
+      }
+
+      unsigned int
+      operator()(const int tag) const
+      {
+        return is_dense ? dense[tag] : sparse.at(tag);
+      }
+
+    private:
+      bool                                  is_dense;
+      std::vector<unsigned int>             dense;
+      std::unordered_map<int, unsigned int> sparse;
+    };
+
+    /** The InputError that refuses `element` of `file` for `defect`. */
+    InputError
+    refusal(const MshContents::Element &element,
+            const std::string          &defect,
+            const std::string          &file)
+    {
+      const Shape     &kind = shape_of(element.type);
+      std::vector<int> nodes(element.nodes.begin(),
+                             element.nodes.begin() + kind.n_nodes);
+      return InputError("The mesh " + file + " is damaged: element " +
+                          std::to_string(element.tag) + " (" +
+                          nodes_text(nodes) + ") " + defect +
+                          "; mesh the body again or move the element's nodes "
+                          "(doc/meshes.md).",
+                        exit_cannot_read_file);
+    }
+
+    /**
+     * Whether the simplex with corners `x` has negative measure; throws the
+     * refusal of `element` if its measure is zero.
+     */
+    bool
+    simplex_is_negative(const MshContents::Element  &element,
+                        const std::array<Vector, 8> &x,
+                        const unsigned int           dim,
+                        const std::string           &file)
+    {
+      const Shape &kind    = shape_of(element.type);
+      double       longest = 0.;
+      for (unsigned int a = 0; a < kind.n_nodes; ++a)
+        for (unsigned int b = a + 1; b < kind.n_nodes; ++b)
+          longest = std::max(longest, norm(minus(x[b], x[a])));
+      const double measure = determinant(dim,
+                                         minus(x[1], x[0]),
+                                         minus(x[2], x[0]),
+                                         minus(x[dim], x[0]));
+      if (!(std::abs(measure) > zero_measure * std::pow(longest, dim)))
+        throw refusal(element,
+                      dim == 2 ? "has zero area: its nodes are on one line" :
+                                 "has zero volume: its nodes are on one plane",
+                      file);
+      return measure < 0.;
+    }
+
+    /**
+     * The refusal of a quadrilateral (hexahedron) whose corners' Jacobian
+     * signs `sign` (1, -1, or 0 for zero) are not one sign with fewer than
+     * half of them zero.
+     */
+    InputError
+    hypercube_refusal(const MshContents::Element &element,
+                      const std::array<int, 8>   &sign,
+                      const unsigned int          n_positive,
+                      const unsigned int          n_negative,
+                      const unsigned int          dim,
+                      const std::string          &file)
+    {
+      const Shape &kind = shape_of(element.type);
+      // the nodes of the corners where the sign is s
+      const auto at = [&](const int s) {
+        std::vector<int> nodes;
+        for (unsigned int v = 0; v < kind.n_nodes; ++v)
+          if (sign[v] == s)
+            nodes.push_back(element.nodes[v]);
+        return nodes;
+      };
+      if (n_positive + n_negative == 0)
+        return refusal(element,
+                       dim == 2 ? "has zero area: its nodes are on one line" :
+                                  "has zero volume: its edges are in one plane "
+                                  "at every corner",
+                       file);
+      if (n_positive * n_negative == 0)
+        return refusal(element,
+                       "is degenerate at " + nodes_text(at(0)) +
+                         ": its Jacobian is zero there, at half its "
+                         "corners or more (an edge of zero length, or " +
+                         (dim == 2 ? "two edges in line" :
+                                     "three edges in one plane") +
+                         " at each)",
+                       file);
+      // the fewer corners first; of as many, those without the first node
+      const int some =
+        n_positive < n_negative || (n_positive == n_negative && sign[0] == -1) ?
+          1 :
+          -1;
+      return refusal(element,
+                     "is tangled: its Jacobian at " + nodes_text(at(some)) +
+                       " has the opposite sign of that at " +
+                       nodes_text(at(-some)) +
+                       (dim == 2 ? " (it crosses itself or is not convex)" :
+                                   " (it is turned inside out at a "
+                                   "corner)"),
+                     file);
+    }
+
+    /**
+     * Whether the quadrilateral (hexahedron) with corners `x` has negative
+     * measure; throws the refusal of `element` if it is degenerate or
+     * tangled.
+     */
+    bool
+    hypercube_is_negative(const MshContents::Element  &element,
+                          const std::array<Vector, 8> &x,
+                          const unsigned int           dim,
+                          const std::string           &file)
+    {
+      const Shape &kind = shape_of(element.type);
+      // the Jacobian at a corner: the determinant of the edges that leave
+      // it along the directions of the unit square (cube); its sign, or 0
+      std::array<int, 8> sign{};
+      unsigned int       n_positive = 0, n_negative = 0;
+      for (unsigned int v = 0; v < kind.n_nodes; ++v)
+        {
+          std::array<Vector, 3> edges{};
+          double                lengths = 1.;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int w = kind.next[v][d];
+              edges[d] = kind.far[v][d] ? minus(x[v], x[w]) : minus(x[w], x[v]);
+              lengths *= norm(edges[d]);
+            }
+          const double jacobian =
+            determinant(dim, edges[0], edges[1], edges[2]);
+          sign[v] = !(std::abs(jacobian) > zero_measure * lengths) ? 0 :
+                    jacobian > 0.                                  ? 1 :
+                                                                     -1;
+          n_positive += sign[v] == 1;
+          n_negative += sign[v] == -1;
+        }
+      // A corner where the Jacobian is zero (a straight angle of a
+      // quadrilateral, three edges of a hexahedron in one plane: Gmsh
+      // makes them where a curved boundary meets a plane of symmetry)
+      // leaves the map one-to-one, its Jacobian positive inside, if the
+      // others agree in sign: in 2D the Jacobian is affine in the unit
+      // square's coordinates. Half the corners or more at zero (a quadri-
+      // lateral with an edge of zero length) is no such cell.
+      const unsigned int n_zero = kind.n_nodes - n_positive - n_negative;
+      if (2 * n_zero >= kind.n_nodes || n_positive * n_negative > 0)
+        throw hypercube_refusal(
+          element, sign, n_positive, n_negative, dim, file);
+      return n_negative > 0;
+    }
+
+    /**
+     * Each cell on its own: its measure, and the sign of its Jacobian at
+     * its corners, which gives the cell's orientation (true: negative).
+     * Throws the refusal of the first cell of zero measure or tangled.
+     */
+    std::vector<bool>
+    orientations(const std::vector<const MshContents::Element *> &cells,
+                 const MshContents                               &contents,
+                 const NodeIndex                                 &index,
+                 const unsigned int                               dim,
+                 const std::string                               &file)
+    {
+      std::vector<bool> negative(cells.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          const MshContents::Element &element = *cells[c];
+          const Shape                &kind    = shape_of(element.type);
+          std::array<Vector, 8>       x;
+          for (unsigned int v = 0; v < kind.n_nodes; ++v)
+            {
+              x[v] = contents.node_coordinates[index(element.nodes[v])];
+              if (dim == 2)
+                x[v][2] = 0.;
+            }
+          negative[c] = kind.simplex ?
+                          simplex_is_negative(element, x, dim, file) :
+                          hypercube_is_negative(element, x, dim, file);
+        }
+      return negative;
+    }
+
+    /**
+     * The faces, each turned the way its cell, turned by its own sign,
+     * sees it (a face of two cells that lie on its two sides is seen turned
+     * opposite ways), sorted by their smallest node (a counting sort,
+     * linear), then each node's few faces by their nodes and cells.
+     */
+    std::vector<Face>
+    sorted_faces(const std::vector<const MshContents::Element *> &cells,
+                 const std::vector<bool>                         &negative,
+                 const NodeIndex                                 &index,
+                 const std::size_t                                n_tags)
+    {
+      std::vector<Face> faces;
+      faces.reserve(cells.size() * shape_of(cells[0]->type).faces.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          const MshContents::Element &element = *cells[c];
+          const Shape                &kind    = shape_of(element.type);
+          for (unsigned int f = 0; f < kind.faces.size(); ++f)
+            {
+              const std::size_t  n = kind.faces[f].size();
+              std::array<int, 4> cycle{};
+              for (std::size_t k = 0; k < n; ++k)
+                cycle[k] = element.nodes[kind.faces[f][k]];
+              Face face{cycle,
+                        c,
+                        static_cast<unsigned char>(f),
+                        turn_of(cycle, n) != negative[c]};
+              std::sort(face.key.begin(), face.key.begin() + n);
+              faces.push_back(face);
+            }
+        }
+      std::vector<std::size_t> first(n_tags + 1, 0);
+      for (const Face &face : faces)
+        ++first[index(face.key[0]) + 1];
+      std::partial_sum(first.begin(), first.end(), first.begin());
+      {
+        std::vector<Face>        by_node(faces.size());
+        std::vector<std::size_t> next(first.begin(), first.end() - 1);
+        for (const Face &face : faces)
+          by_node[next[index(face.key[0])]++] = face;
+        faces.swap(by_node);
+      }
+      for (std::size_t i = 0; i + 1 < first.size(); ++i)
+        std::sort(faces.begin() + first[i],
+                  faces.begin() + first[i + 1],
+                  [](const Face &a, const Face &b) {
+                    return a.key < b.key || (a.key == b.key && a.cell < b.cell);
+                  });
+      return faces;
+    }
+
+    constexpr unsigned int none = std::numeric_limits<unsigned int>::max();
+
+    /**
+     * A cell's faces shared with other cells, those it shares with a cell
+     * on the same side (or with two cells), and of these the one whose
+     * other cell comes first.
+     */
+    struct Neighbours
+    {
+      unsigned int  shared      = 0;
+      unsigned int  overlapping = 0;
+      unsigned int  other       = none;
+      unsigned char face        = 0;
+      std::size_t   n_sharing   = 0; // the cells of that face
+    };
+
+    /** The Neighbours of each cell, from the sorted_faces(). */
+    std::vector<Neighbours>
+    neighbours_of(const std::vector<Face> &faces, const std::size_t n_cells)
+    {
+      std::vector<Neighbours> neighbours(n_cells);
+      for (std::size_t begin = 0; begin < faces.size();)
+        {
+          std::size_t end = begin + 1;
+          while (end < faces.size() && faces[end].key == faces[begin].key)
+            ++end;
+          const std::size_t n_sharing = end - begin;
+          for (std::size_t i = begin; n_sharing > 1 && i < end; ++i)
+            {
+              Neighbours &n = neighbours[faces[i].cell];
+              ++n.shared;
+              // the other cells, those on the same side of the face
+              unsigned int other = none;
+              for (std::size_t j = begin; j < end; ++j)
+                if (j != i && (n_sharing > 2 || faces[j].turn == faces[i].turn))
+                  other = std::min(other, faces[j].cell);
+              if (other == none)
+                continue;
+              ++n.overlapping;
+              if (other < n.other)
+                {
+                  n.other     = other;
+                  n.face      = faces[i].face;
+                  n.n_sharing = n_sharing;
+                }
+            }
+          begin = end;
+        }
+      return neighbours;
+    }
+
+    /**
+     * The cell that disagrees with the largest share of its neighbours,
+     * then with the most of them, then the first in the file; `none` if no
+     * cell overlaps another.
+     */
+    unsigned int
+    most_folded(const std::vector<Neighbours> &neighbours)
+    {
+      unsigned int folded = none;
+      for (unsigned int c = 0; c < neighbours.size(); ++c)
+        {
+          const Neighbours &n = neighbours[c];
+          if (n.overlapping == 0)
+            continue;
+          if (folded == none)
+            {
+              folded = c;
+              continue;
+            }
+          const Neighbours &m       = neighbours[folded];
+          const auto        share_c = std::uint64_t(n.overlapping) * m.shared;
+          const auto        share_f = std::uint64_t(m.overlapping) * n.shared;
+          if (share_c > share_f ||
+              (share_c == share_f && n.overlapping > m.overlapping))
+            folded = c;
+        }
+      return folded;
+    }
+
+    /** The refusal of the cell `folded`, with its Neighbours `n`. */
+    InputError
+    folded_refusal(const std::vector<const MshContents::Element *> &cells,
+                   const unsigned int                               folded,
+                   const Neighbours                                &n,
+                   const unsigned int                               dim,
+                   const std::string                               &file)
+    {
+      const MshContents::Element &element = *cells[folded];
+      std::vector<int>            face_nodes;
+      for (const unsigned int v : shape_of(element.type).faces[n.face])
+        face_nodes.push_back(element.nodes[v]);
+      const std::string face = dim == 2 ? "edge" : "face";
+      return refusal(element,
+                     "is folded: it overlaps its neighbours (" +
+                       (n.n_sharing > 2 ?
+                          "its " + face + ", " + nodes_text(face_nodes) +
+                            ", is " + (dim == 2 ? "an " : "a ") + face +
+                            " of " + std::to_string(n.n_sharing) + " elements" :
+                          "it and element " +
+                            std::to_string(cells[n.other]->tag) +
+                            " lie on the same side of their common " + face +
+                            ", " + nodes_text(face_nodes)) +
+                       ")",
+                     file);
+    }
   } // namespace
 
   void
@@ -172,271 +541,14 @@ namespace dualcontact
     if (cells.empty())
       return;
 
-    // the index of a node tag in contents.node_tags: by tag if the tags
-    // are dense (as Gmsh numbers them), else hashed
-    const std::vector<int> &tags = contents.node_tags;
-    const int               largest =
-      tags.empty() ? 0 : *std::max_element(tags.begin(), tags.end());
-    std::vector<unsigned int>             dense;
-    std::unordered_map<int, unsigned int> sparse;
-    const bool                            is_dense =
-      static_cast<std::size_t>(largest) <= 8 * tags.size() + 1024;
-    if (is_dense)
-      {
-        dense.assign(largest + 1, 0);
-        for (unsigned int i = 0; i < tags.size(); ++i)
-          dense[tags[i]] = i;
-      }
-    else
-      for (unsigned int i = 0; i < tags.size(); ++i)
-        sparse.emplace(tags[i], i);
-    const auto index = [&](const int tag) {
-      return is_dense ? dense[tag] : sparse.at(tag);
-    };
-    const auto position = [&](const int tag) -> const Vector & {
-      return contents.node_coordinates[index(tag)];
-    };
-
-    const auto refuse = [&](const MshContents::Element &element,
-                            const std::string          &defect) {
-      const Shape     &kind = shape_of(element.type);
-      std::vector<int> nodes(element.nodes.begin(),
-                             element.nodes.begin() + kind.n_nodes);
-      return InputError("The mesh " + file + " is damaged: element " +
-                          std::to_string(element.tag) + " (" +
-                          nodes_text(nodes) + ") " + defect +
-                          "; mesh the body again or move the element's nodes "
-                          "(doc/meshes.md).",
-                        exit_cannot_read_file);
-    };
-
-    // each cell on its own: its measure, and the sign of its Jacobian at
-    // its corners, which gives the cell's orientation
-    std::vector<bool> negative(cells.size());
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      {
-        const MshContents::Element &element = *cells[c];
-        const Shape                &kind    = shape_of(element.type);
-        std::array<Vector, 8>       x;
-        for (unsigned int v = 0; v < kind.n_nodes; ++v)
-          {
-            x[v] = position(element.nodes[v]);
-            if (dim == 2)
-              x[v][2] = 0.;
-          }
-        if (kind.simplex)
-          {
-            double longest = 0.;
-            for (unsigned int a = 0; a < kind.n_nodes; ++a)
-              for (unsigned int b = a + 1; b < kind.n_nodes; ++b)
-                longest = std::max(longest, norm(minus(x[b], x[a])));
-            const double measure = determinant(dim,
-                                               minus(x[1], x[0]),
-                                               minus(x[2], x[0]),
-                                               minus(x[dim], x[0]));
-            if (!(std::abs(measure) > zero_measure * std::pow(longest, dim)))
-              throw refuse(element,
-                           dim == 2 ?
-                             "has zero area: its nodes are on one line" :
-                             "has zero volume: its nodes are on one plane");
-            negative[c] = measure < 0.;
-            continue;
-          }
-
-        // the Jacobian at a corner: the determinant of the edges that leave
-        // it along the directions of the unit square (cube); its sign, or 0
-        std::array<int, 8> sign{};
-        unsigned int       n_positive = 0, n_negative = 0;
-        for (unsigned int v = 0; v < kind.n_nodes; ++v)
-          {
-            std::array<Vector, 3> edges{};
-            double                lengths = 1.;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const unsigned int w = kind.next[v][d];
-                edges[d] =
-                  kind.far[v][d] ? minus(x[v], x[w]) : minus(x[w], x[v]);
-                lengths *= norm(edges[d]);
-              }
-            const double jacobian =
-              determinant(dim, edges[0], edges[1], edges[2]);
-            sign[v] = !(std::abs(jacobian) > zero_measure * lengths) ? 0 :
-                      jacobian > 0.                                  ? 1 :
-                                                                       -1;
-            n_positive += sign[v] == 1;
-            n_negative += sign[v] == -1;
-          }
-        // A corner where the Jacobian is zero (a straight angle of a
-        // quadrilateral, three edges of a hexahedron in one plane: Gmsh
-        // makes them where a curved boundary meets a plane of symmetry)
-        // leaves the map one-to-one, its Jacobian positive inside, if the
-        // others agree in sign: in 2D the Jacobian is affine in the unit
-        // square's coordinates. Half the corners or more at zero (a quadri-
-        // lateral with an edge of zero length) is no such cell.
-        const unsigned int n_zero = kind.n_nodes - n_positive - n_negative;
-        if (2 * n_zero >= kind.n_nodes || n_positive * n_negative > 0)
-          {
-            // the nodes of the corners where the sign is s
-            const auto at = [&](const int s) {
-              std::vector<int> nodes;
-              for (unsigned int v = 0; v < kind.n_nodes; ++v)
-                if (sign[v] == s)
-                  nodes.push_back(element.nodes[v]);
-              return nodes;
-            };
-            if (n_positive + n_negative == 0)
-              throw refuse(element,
-                           dim == 2 ?
-                             "has zero area: its nodes are on one line" :
-                             "has zero volume: its edges are in one plane at "
-                             "every corner");
-            if (n_positive * n_negative == 0)
-              throw refuse(element,
-                           "is degenerate at " + nodes_text(at(0)) +
-                             ": its Jacobian is zero there, at half its "
-                             "corners or more (an edge of zero length, or " +
-                             (dim == 2 ? "two edges in line" :
-                                         "three edges in one plane") +
-                             " at each)");
-            // the fewer corners first; of as many, those without the first
-            // node
-            const int some = n_positive < n_negative ||
-                                 (n_positive == n_negative && sign[0] == -1) ?
-                               1 :
-                               -1;
-            throw refuse(element,
-                         "is tangled: its Jacobian at " + nodes_text(at(some)) +
-                           " has the opposite sign of that at " +
-                           nodes_text(at(-some)) +
-                           (dim == 2 ? " (it crosses itself or is not convex)" :
-                                       " (it is turned inside out at a "
-                                       "corner)"));
-          }
-        negative[c] = n_negative > 0;
-      }
-
-    // the faces, each turned the way its cell, turned by its own sign,
-    // sees it: a face of two cells that lie on its two sides is seen
-    // turned opposite ways
-    std::vector<Face> faces;
-    faces.reserve(cells.size() * shape_of(cells[0]->type).faces.size());
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      {
-        const MshContents::Element &element = *cells[c];
-        const Shape                &kind    = shape_of(element.type);
-        for (unsigned int f = 0; f < kind.faces.size(); ++f)
-          {
-            const std::size_t  n = kind.faces[f].size();
-            std::array<int, 4> cycle{};
-            for (std::size_t k = 0; k < n; ++k)
-              cycle[k] = element.nodes[kind.faces[f][k]];
-            Face face{cycle,
-                      c,
-                      static_cast<unsigned char>(f),
-                      turn_of(cycle, n) != negative[c]};
-            std::sort(face.key.begin(), face.key.begin() + n);
-            faces.push_back(face);
-          }
-      }
-    // sorted by their smallest node (a counting sort, linear), then each
-    // node's few faces by their nodes and cells
-    std::vector<std::size_t> first(tags.size() + 1, 0);
-    for (const Face &face : faces)
-      ++first[index(face.key[0]) + 1];
-    std::partial_sum(first.begin(), first.end(), first.begin());
-    {
-      std::vector<Face>        by_node(faces.size());
-      std::vector<std::size_t> next(first.begin(), first.end() - 1);
-      for (const Face &face : faces)
-        by_node[next[index(face.key[0])]++] = face;
-      faces.swap(by_node);
-    }
-    for (std::size_t i = 0; i + 1 < first.size(); ++i)
-      std::sort(faces.begin() + first[i],
-                faces.begin() + first[i + 1],
-                [](const Face &a, const Face &b) {
-                  return a.key < b.key || (a.key == b.key && a.cell < b.cell);
-                });
-
-    // for each cell: its faces shared with other cells, those it shares
-    // with a cell on the same side (or with two cells), and of these the one
-    // whose other cell comes first
-    const unsigned int none = std::numeric_limits<unsigned int>::max();
-    struct Neighbours
-    {
-      unsigned int  shared      = 0;
-      unsigned int  overlapping = 0;
-      unsigned int  other       = std::numeric_limits<unsigned int>::max();
-      unsigned char face        = 0;
-      std::size_t   n_sharing   = 0; // the cells of that face
-    };
-    std::vector<Neighbours> neighbours(cells.size());
-    for (std::size_t begin = 0; begin < faces.size();)
-      {
-        std::size_t end = begin + 1;
-        while (end < faces.size() && faces[end].key == faces[begin].key)
-          ++end;
-        const std::size_t n_sharing = end - begin;
-        for (std::size_t i = begin; n_sharing > 1 && i < end; ++i)
-          {
-            Neighbours &n = neighbours[faces[i].cell];
-            ++n.shared;
-            // the other cells, those on the same side of the face
-            unsigned int other = none;
-            for (std::size_t j = begin; j < end; ++j)
-              if (j != i && (n_sharing > 2 || faces[j].turn == faces[i].turn))
-                other = std::min(other, faces[j].cell);
-            if (other == none)
-              continue;
-            ++n.overlapping;
-            if (other < n.other)
-              {
-                n.other     = other;
-                n.face      = faces[i].face;
-                n.n_sharing = n_sharing;
-              }
-          }
-        begin = end;
-      }
-
-    // the cell that disagrees with the largest share of its neighbours,
-    // then with the most of them, then the first in the file
-    unsigned int folded = none;
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      {
-        const Neighbours &n = neighbours[c];
-        if (n.overlapping == 0)
-          continue;
-        if (folded == none)
-          {
-            folded = c;
-            continue;
-          }
-        const Neighbours &m       = neighbours[folded];
-        const auto        share_c = std::uint64_t(n.overlapping) * m.shared;
-        const auto        share_f = std::uint64_t(m.overlapping) * n.shared;
-        if (share_c > share_f ||
-            (share_c == share_f && n.overlapping > m.overlapping))
-          folded = c;
-      }
-    if (folded == none)
-      return;
-
-    const Neighbours           &n       = neighbours[folded];
-    const MshContents::Element &element = *cells[folded];
-    std::vector<int>            face_nodes;
-    for (const unsigned int v : shape_of(element.type).faces[n.face])
-      face_nodes.push_back(element.nodes[v]);
-    const std::string face = dim == 2 ? "edge" : "face";
-    throw refuse(element,
-                 "is folded: it overlaps its neighbours (" +
-                   (n.n_sharing > 2 ?
-                      "its " + face + ", " + nodes_text(face_nodes) + ", is " +
-                        (dim == 2 ? "an " : "a ") + face + " of " +
-                        std::to_string(n.n_sharing) + " elements" :
-                      "it and element " + std::to_string(cells[n.other]->tag) +
-                        " lie on the same side of their common " + face + ", " +
-                        nodes_text(face_nodes)) +
-                   ")");
+    const NodeIndex         index(contents.node_tags);
+    const std::vector<bool> negative =
+      orientations(cells, contents, index, dim, file);
+    const std::vector<Neighbours> neighbours = neighbours_of(
+      sorted_faces(cells, negative, index, contents.node_tags.size()),
+      cells.size());
+    const unsigned int folded = most_folded(neighbours);
+    if (folded != none)
+      throw folded_refusal(cells, folded, neighbours[folded], dim, file);
   }
 } // namespace dualcontact

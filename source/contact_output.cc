@@ -149,6 +149,142 @@ namespace dualcontact
       }
   }
 
+  namespace
+  {
+    /**
+     * The nodal values of the contact nodes, packed dim to a vector of the
+     * displacement element at the node's DoFs (`n_packed` values: l1, with
+     * friction g, the gap, the status plus one, then the normal, the slip
+     * and with friction the tangential traction), the hanging nodes on
+     * Gamma_C interpolated from their masters, with the locally relevant
+     * DoFs.
+     */
+    template <int dim>
+    std::vector<TrilinosWrappers::MPI::Vector>
+    packed_nodal_values(
+      const DoFHandler<dim>               &dof_handler,
+      const ContactSet<dim>               &contact_set,
+      const TrilinosWrappers::MPI::Vector &displacement,
+      const AffineConstraints<double>     &hanging_node_constraints,
+      const IndexSet                      &locally_relevant_dofs,
+      const bool                           friction,
+      const unsigned int                   n_packed)
+    {
+      const unsigned int n_slots = (n_packed + dim - 1) / dim;
+      const MPI_Comm  comm = dof_handler.get_triangulation().get_communicator();
+      const IndexSet &owned = dof_handler.locally_owned_dofs();
+      std::vector<TrilinosWrappers::MPI::Vector> packed(n_slots);
+      for (auto &slot : packed)
+        slot.reinit(owned, comm);
+      std::vector<double>                  values(n_packed);
+      const TrilinosWrappers::MPI::Vector &u =
+        contact_set.with_masters(displacement);
+      for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+        {
+          const ContactNode<dim> &node = contact_set.nodes[s];
+          unsigned int            q    = 0;
+          values[q++]                  = contact_set.l1[s];
+          if (friction)
+            values[q++] = contact_set.threshold[s];
+          values[q++] = node.gap0 - contact_set.normal_displacement(u, s);
+          values[q++] = contact_set.status(s) + 1.;
+          const Tensor<1, dim - 1> vt = contact_set.slip(u, s);
+          Tensor<1, dim>           slip, traction;
+          for (unsigned int k = 0; k < dim - 1; ++k)
+            {
+              slip += vt[k] * node.tangents[k];
+              traction += contact_set.l2[s][k] * node.tangents[k];
+            }
+          for (const Tensor<1, dim> &v : {node.normal, slip, traction})
+            for (unsigned int d = 0; d < dim && q < n_packed; ++d)
+              values[q++] = v[d];
+          for (q = 0; q < n_packed; ++q)
+            packed[q / dim][node.dofs[q % dim]] = values[q];
+        }
+      for (auto &slot : packed)
+        {
+          slot.compress(VectorOperation::insert);
+          // hanging nodes on Gamma_C: the interpolation of their masters
+          hanging_node_constraints.distribute(slot);
+          TrilinosWrappers::MPI::Vector owned_slot = slot;
+          slot.reinit(owned, locally_relevant_dofs, comm);
+          slot = owned_slot;
+        }
+      return packed;
+    }
+
+    /**
+     * One patch per contact face of a locally owned cell, subdivided k
+     * times in each direction for FE_Q(k): its points are the face's
+     * support points in lexicographic order, where the mapping puts them
+     * (on the curve of a curved face). A triangle face (of a tetrahedron,
+     * P1 only) is one patch of its 3 vertices, in the face's order. Each
+     * patch's data: the `n_packed` values, the status (row `status_row`)
+     * less one again, the displacement, then the points' coordinates (row
+     * `n_names` on).
+     */
+    template <int dim>
+    std::vector<DataOutBase::Patch<dim - 1, dim>>
+    contact_face_patches(
+      const Mapping<dim>                               &mapping,
+      const DoFHandler<dim>                            &dof_handler,
+      const std::set<types::boundary_id>               &contact_ids,
+      const std::vector<TrilinosWrappers::MPI::Vector> &packed,
+      const TrilinosWrappers::MPI::Vector              &displacement,
+      const unsigned int                                n_packed,
+      const unsigned int                                n_names,
+      const unsigned int                                status_row)
+    {
+      const FiniteElement<dim> &fe = dof_handler.get_fe();
+      const ReferenceCell       face_cell =
+        fe.reference_cell().face_reference_cell(0);
+      const bool                triangles = !face_cell.is_hyper_cube();
+      const unsigned int        k         = triangles ? 1 : fe.degree;
+      std::vector<unsigned int> lexicographic(face_cell.n_vertices());
+      if (triangles)
+        std::iota(lexicographic.begin(), lexicographic.end(), 0u);
+      else
+        lexicographic =
+          FETools::hierarchic_to_lexicographic_numbering<dim - 1>(k);
+      std::map<types::global_dof_index, Point<dim>> where;
+      DoFTools::map_dofs_to_support_points(mapping, dof_handler, where);
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+      std::vector<DataOutBase::Patch<dim - 1, dim>> patches;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->at_boundary())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                contact_ids.count(cell->face(f)->boundary_id()))
+              {
+                const auto                       face = cell->face(f);
+                DataOutBase::Patch<dim - 1, dim> patch;
+                patch.reference_cell = face_cell;
+                patch.n_subdivisions = k;
+                patch.patch_index    = patches.size();
+                for (const unsigned int v : face->vertex_indices())
+                  patch.vertices[v] = face->vertex(v);
+                // the data, then the points' coordinates
+                patch.points_are_available = true;
+                patch.data.reinit(n_names + dim, lexicographic.size());
+                face->get_dof_indices(face_dofs);
+                for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                  {
+                    const auto [c, j] = fe.face_system_to_component_index(i, f);
+                    const unsigned int            p   = lexicographic[j];
+                    const types::global_dof_index dof = face_dofs[i];
+                    for (unsigned int q = c; q < n_packed; q += dim)
+                      patch.data(q, p) = packed[q / dim](dof);
+                    if (status_row % dim == c)
+                      patch.data(status_row, p) -= 1.;
+                    patch.data(n_packed + c, p) = displacement(dof);
+                    patch.data(n_names + c, p)  = where.at(dof)[c];
+                  }
+                patches.push_back(std::move(patch));
+              }
+      return patches;
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactBoundaryOutput<dim>::build_patches(
@@ -175,47 +311,14 @@ namespace dualcontact
         vectors.emplace_back("tangential_traction");
       }
     const unsigned int n_packed = scalars.size() + dim * vectors.size();
-    const unsigned int n_slots  = (n_packed + dim - 1) / dim;
-
-    const MPI_Comm  comm  = dof_handler.get_triangulation().get_communicator();
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
-    std::vector<TrilinosWrappers::MPI::Vector> packed(n_slots);
-    for (auto &slot : packed)
-      slot.reinit(owned, comm);
-    std::vector<double>                  values(n_packed);
-    const TrilinosWrappers::MPI::Vector &u =
-      contact_set.with_masters(displacement);
-    for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-      {
-        const ContactNode<dim> &node = contact_set.nodes[s];
-        unsigned int            q    = 0;
-        values[q++]                  = contact_set.l1[s];
-        if (friction)
-          values[q++] = contact_set.threshold[s];
-        values[q++] = node.gap0 - contact_set.normal_displacement(u, s);
-        values[q++] = contact_set.status(s) + 1.;
-        const Tensor<1, dim - 1> vt = contact_set.slip(u, s);
-        Tensor<1, dim>           slip, traction;
-        for (unsigned int k = 0; k < dim - 1; ++k)
-          {
-            slip += vt[k] * node.tangents[k];
-            traction += contact_set.l2[s][k] * node.tangents[k];
-          }
-        for (const Tensor<1, dim> &v : {node.normal, slip, traction})
-          for (unsigned int d = 0; d < dim && q < n_packed; ++d)
-            values[q++] = v[d];
-        for (q = 0; q < n_packed; ++q)
-          packed[q / dim][node.dofs[q % dim]] = values[q];
-      }
-    for (auto &slot : packed)
-      {
-        slot.compress(VectorOperation::insert);
-        // hanging nodes on Gamma_C: the interpolation of their masters
-        hanging_node_constraints.distribute(slot);
-        TrilinosWrappers::MPI::Vector owned_slot = slot;
-        slot.reinit(owned, locally_relevant_dofs, comm);
-        slot = owned_slot;
-      }
+    const std::vector<TrilinosWrappers::MPI::Vector> packed =
+      packed_nodal_values(dof_handler,
+                          contact_set,
+                          displacement,
+                          hanging_node_constraints,
+                          locally_relevant_dofs,
+                          friction,
+                          n_packed);
 
     // the names: the scalars, the vectors, then the displacement
     names = scalars;
@@ -232,57 +335,14 @@ namespace dualcontact
       }
     const unsigned int status_row = friction ? 3 : 2;
 
-    // One patch per contact face of a locally owned cell, subdivided k
-    // times in each direction for FE_Q(k): its points are the face's
-    // support points in lexicographic order, where the mapping puts them
-    // (on the curve of a curved face).
-    // A triangle face (of a tetrahedron, P1 only) is one patch of its 3
-    // vertices, in the face's order.
-    const FiniteElement<dim> &fe  = dof_handler.get_fe();
-    const ReferenceCell face_cell = fe.reference_cell().face_reference_cell(0);
-    const bool          triangles = !face_cell.is_hyper_cube();
-    const unsigned int  k         = triangles ? 1 : fe.degree;
-    std::vector<unsigned int> lexicographic(face_cell.n_vertices());
-    if (triangles)
-      std::iota(lexicographic.begin(), lexicographic.end(), 0u);
-    else
-      lexicographic =
-        FETools::hierarchic_to_lexicographic_numbering<dim - 1>(k);
-    std::map<types::global_dof_index, Point<dim>> where;
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, where);
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-    patches.clear();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->at_boundary())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              contact_ids.count(cell->face(f)->boundary_id()))
-            {
-              const auto                       face = cell->face(f);
-              DataOutBase::Patch<dim - 1, dim> patch;
-              patch.reference_cell = face_cell;
-              patch.n_subdivisions = k;
-              patch.patch_index    = patches.size();
-              for (const unsigned int v : face->vertex_indices())
-                patch.vertices[v] = face->vertex(v);
-              // the data, then the points' coordinates
-              patch.points_are_available = true;
-              patch.data.reinit(names.size() + dim, lexicographic.size());
-              face->get_dof_indices(face_dofs);
-              for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                {
-                  const auto [c, j] = fe.face_system_to_component_index(i, f);
-                  const unsigned int            p   = lexicographic[j];
-                  const types::global_dof_index dof = face_dofs[i];
-                  for (unsigned int q = c; q < n_packed; q += dim)
-                    patch.data(q, p) = packed[q / dim](dof);
-                  if (status_row % dim == c)
-                    patch.data(status_row, p) -= 1.;
-                  patch.data(n_packed + c, p)     = displacement(dof);
-                  patch.data(names.size() + c, p) = where.at(dof)[c];
-                }
-              patches.push_back(std::move(patch));
-            }
+    patches = contact_face_patches(mapping,
+                                   dof_handler,
+                                   contact_ids,
+                                   packed,
+                                   displacement,
+                                   n_packed,
+                                   names.size(),
+                                   status_row);
   }
 
   template std::vector<ContactNodeRow<2>>

@@ -8,6 +8,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <dualcontact/cell_loads.h>
 #include <dualcontact/discretization.h>
 #include <dualcontact/elasticity.h>
 #include <dualcontact/input_error.h>
@@ -24,11 +25,8 @@ namespace dualcontact
   {
     /**
      * The cell terms of linear elasticity: the stiffness of a(u, v) =
-     * int sigma(u):eps(v), the load int f.v + int_{Gamma_N} T.v (only the
-     * loads the scene has) and, if asked, the lumped mass: int phi_i, the
-     * row sums of the mass matrix int u.v, on quadrilaterals; on simplices
-     * the diagonal int phi_i^2 scaled to the cell's measure per component
-     * (lumped_mass.h).
+     * int sigma(u):eps(v), and the load and, if asked, the lumped mass of
+     * CellLoads.
      */
     template <int dim>
     class CellAssembler
@@ -37,39 +35,20 @@ namespace dualcontact
       CellAssembler(const Mapping<dim>       &mapping,
                     const FiniteElement<dim> &fe,
                     const Scene<dim>         &scene)
-          : fe(fe)
-          , scene(scene)
+          : loads(mapping, fe, scene, update_gradients)
+          , mass(loads.mass)
+          , rhs(loads.rhs)
           , material(scene.parameters.material)
-          , simplex(!fe.reference_cell().is_hyper_cube())
-          , quadrature(cell_quadrature(fe, fe.degree + 1))
-          , face_quadrature(dualcontact::face_quadrature(fe, fe.degree + 1))
-          , fe_values(mapping,
-                      fe,
-                      quadrature,
-                      update_values | update_gradients |
-                        update_quadrature_points | update_JxW_values)
-          , fe_face_values(mapping,
-                           fe,
-                           face_quadrature,
-                           update_values | update_quadrature_points |
-                             update_JxW_values)
           , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
-          , mass(fe.n_dofs_per_cell())
-          , squares(fe.n_dofs_per_cell())
-          , rhs(fe.n_dofs_per_cell())
           , eps(fe.n_dofs_per_cell())
           , div(fe.n_dofs_per_cell())
-          , load_values(quadrature.size(), Vector<double>(dim))
-          , traction_values(face_quadrature.size(), Vector<double>(dim))
-          , traction_ids(scene.ids_with(BoundaryCondition::traction))
       {}
 
       /** Add the resultant of the cell's loads `rhs` to `load`. */
       void
       add_resultant(std::array<double, 3> &load) const
       {
-        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          load[fe.system_to_component_index(i).first] += rhs(i);
+        loads.add_resultant(load);
       }
 
       /** Fill `matrix`, `rhs` and, with `with_mass`, `mass` for `cell`. */
@@ -77,21 +56,14 @@ namespace dualcontact
       assemble(const typename DoFHandler<dim>::active_cell_iterator &cell,
                const bool                                            with_mass)
       {
-        const unsigned int               n_dofs = fe.n_dofs_per_cell();
+        loads.reinit(cell, with_mass);
+        const FEValues<dim>             &fe_values = loads.fe_values;
+        const unsigned int               n_dofs    = loads.fe.n_dofs_per_cell();
         const FEValuesExtractors::Vector displacement(0);
-        const Function<dim>             *body_force = scene.body_force();
         // each body its material (<Material/Materials by id>)
         const MaterialParameters here   = material.of(cell->material_id());
         const double             lambda = here.lambda(), mu = here.mu();
-        fe_values.reinit(cell);
-        matrix         = 0;
-        mass           = 0;
-        squares        = 0;
-        rhs            = 0;
-        double measure = 0.;
-        if (body_force != nullptr)
-          body_force->vector_value_list(fe_values.get_quadrature_points(),
-                                        load_values);
+        matrix = 0;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             for (unsigned int i = 0; i < n_dofs; ++i)
@@ -100,78 +72,26 @@ namespace dualcontact
                 div[i] = trace(eps[i]);
               }
             const double JxW = fe_values.JxW(q);
-            measure += JxW;
             // sigma(u):eps(v) = lambda div u div v + 2 mu eps(u):eps(v)
             for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                for (unsigned int j = 0; j <= i; ++j)
-                  matrix(i, j) +=
-                    (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
-                    JxW;
-                // the row sum of int u.v: the shape functions of a
-                // component sum to one
-                if (with_mass)
-                  {
-                    const double phi = fe_values.shape_value(i, q);
-                    mass(i) += phi * JxW;
-                    squares(i) += phi * phi * JxW;
-                  }
-                if (body_force != nullptr)
-                  rhs(i) +=
-                    load_values[q](fe.system_to_component_index(i).first) *
-                    fe_values.shape_value(i, q) * JxW;
-              }
+              for (unsigned int j = 0; j <= i; ++j)
+                matrix(i, j) +=
+                  (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
+                  JxW;
           }
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = i + 1; j < n_dofs; ++j)
             matrix(i, j) = matrix(j, i);
-        // P2's vertex functions on a triangle integrate to zero: the
-        // diagonal, scaled so that each component's entries sum to the
-        // cell's measure, is positive (and equals the row sums for P1)
-        if (with_mass && simplex)
-          {
-            double sum = 0.;
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              if (fe.system_to_component_index(i).first == 0)
-                sum += squares(i);
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              mass(i) = squares(i) * measure / sum;
-          }
-
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && traction_ids.count(face->boundary_id()))
-            if (const Function<dim> *traction =
-                  scene.traction(face->boundary_id()))
-              {
-                fe_face_values.reinit(cell, face);
-                traction->vector_value_list(
-                  fe_face_values.get_quadrature_points(), traction_values);
-                for (const unsigned int q :
-                     fe_face_values.quadrature_point_indices())
-                  for (unsigned int i = 0; i < n_dofs; ++i)
-                    rhs(i) += traction_values[q](
-                                fe.system_to_component_index(i).first) *
-                              fe_face_values.shape_value(i, q) *
-                              fe_face_values.JxW(q);
-              }
       }
 
-      const FiniteElement<dim> &fe;
-      const Scene<dim>         &scene;
+      CellLoads<dim>            loads;
+      const Vector<double>     &mass, &rhs;
       const MaterialParameters &material;
-      const bool                simplex;
-      const Quadrature<dim>     quadrature;
-      const Quadrature<dim - 1> face_quadrature;
-      FEValues<dim>             fe_values;
-      FEFaceValues<dim>         fe_face_values;
       FullMatrix<double>        matrix;
-      Vector<double>            mass, squares, rhs;
 
     private:
       std::vector<SymmetricTensor<2, dim>> eps;
       std::vector<double>                  div;
-      std::vector<Vector<double>>          load_values, traction_values;
-      const std::set<types::boundary_id>   traction_ids;
     };
   } // namespace
 
@@ -238,6 +158,186 @@ namespace dualcontact
     matrix.compress(VectorOperation::add);
   }
 
+  namespace
+  {
+    /**
+     * The residual of the unconstrained equations, R = A u - f, plus the
+     * contact forces, the resultant of the loads, and with more than one
+     * body (parts of the mesh that share no vertex) each body's loads and
+     * each owned DoF's body and component, from a locally owned cell that
+     * holds it.
+     */
+    struct BodyResiduals
+    {
+      TrilinosWrappers::MPI::Vector      residual;
+      std::array<double, 3>              load{};
+      unsigned int                       n_bodies = 1;
+      std::vector<std::array<double, 3>> load_on_body;
+      std::vector<unsigned int>          body_of_dof, component_of_dof;
+    };
+
+    template <int dim>
+    BodyResiduals
+    body_residuals(const Mapping<dim>                  &mapping,
+                   const DoFHandler<dim>               &dof_handler,
+                   const Scene<dim>                    &scene,
+                   const TrilinosWrappers::MPI::Vector &solution,
+                   const TrilinosWrappers::MPI::Vector *contact_forces)
+    {
+      const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+      CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
+      const unsigned int n_dofs = dof_handler.get_fe().n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(n_dofs);
+      BodyResiduals                        result;
+      result.residual.reinit(dof_handler.locally_owned_dofs(), comm);
+      Vector<double>                  u(n_dofs), r(n_dofs);
+      const IndexSet                 &owned = dof_handler.locally_owned_dofs();
+      const std::vector<unsigned int> body_of_coarse_cell =
+        bodies_of_coarse_cells(dof_handler.get_triangulation());
+      result.n_bodies = 1 + *std::max_element(body_of_coarse_cell.begin(),
+                                              body_of_coarse_cell.end());
+      result.load_on_body.resize(result.n_bodies);
+      result.body_of_dof.assign(owned.n_elements(), 0);
+      result.component_of_dof.assign(owned.n_elements(), 0);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            local.assemble(cell, false);
+            cell->get_dof_values(solution, u);
+            local.matrix.vmult(r, u);
+            r -= local.rhs;
+            cell->get_dof_indices(dof_indices);
+            result.residual.add(dof_indices, r);
+            local.add_resultant(result.load);
+            const unsigned int body = body_of<dim>(cell, body_of_coarse_cell);
+            if (result.n_bodies > 1)
+              {
+                local.add_resultant(result.load_on_body[body]);
+                for (unsigned int k = 0; k < n_dofs; ++k)
+                  if (owned.is_element(dof_indices[k]))
+                    {
+                      const auto index = owned.index_within_set(dof_indices[k]);
+                      result.body_of_dof[index] = body;
+                      result.component_of_dof[index] =
+                        dof_handler.get_fe().system_to_component_index(k).first;
+                    }
+              }
+          }
+      result.residual.compress(VectorOperation::add);
+      if (contact_forces != nullptr)
+        result.residual += *contact_forces;
+      return result;
+    }
+
+    /**
+     * The reaction of support id along e_c is R . w, w = 1 at the DoFs of
+     * component c the support constrains and 0 at the other DoFs that are
+     * not hanging; at a hanging DoF w interpolates its masters, so that w
+     * is a finite element function: R vanishes against every such function
+     * that is zero on the supports and the contact nodes (the equations),
+     * which makes the reactions, the contact force and the loads balance
+     * exactly. A DoF two supports constrain counts for the first ('fixed'
+     * before 'normal fixed', the order the constraints were made in).
+     * Fills record.on_id and adds each owned DoF's share to its body's
+     * `reaction_on_body`.
+     */
+    template <int dim>
+    void
+    support_reactions(const DoFHandler<dim>           &dof_handler,
+                      const Scene<dim>                &scene,
+                      const AffineConstraints<double> &constraints,
+                      const AffineConstraints<double> &hanging_node_constraints,
+                      const BodyResiduals             &residuals,
+                      ReactionRecord                  &record,
+                      std::vector<std::array<double, 3>> &reaction_on_body)
+    {
+      const MPI_Comm  comm = dof_handler.get_triangulation().get_communicator();
+      const IndexSet &owned = dof_handler.locally_owned_dofs();
+      const TrilinosWrappers::MPI::Vector &residual = residuals.residual;
+      IndexSet                             relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      std::set<types::global_dof_index> claimed;
+      TrilinosWrappers::MPI::Vector     w(owned, comm),
+        w_ghosted(owned, relevant, comm);
+      for (const BoundaryCondition condition :
+           {BoundaryCondition::fixed, BoundaryCondition::normal_fixed})
+        for (const types::boundary_id id : scene.ids_with(condition))
+          {
+            std::array<double, 3> &reaction = record.on_id[id];
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                ComponentMask mask(dim, false);
+                mask.set(c, true);
+                w = 0.;
+                for (const auto i :
+                     DoFTools::extract_boundary_dofs(dof_handler, mask, {id}))
+                  if (owned.is_element(i) && constraints.is_constrained(i) &&
+                      !hanging_node_constraints.is_constrained(i) &&
+                      claimed.insert(i).second)
+                    w[i] = 1.;
+                w.compress(VectorOperation::insert);
+                w_ghosted  = w;
+                double sum = 0.;
+                for (const auto i : owned)
+                  {
+                    double wi = w[i];
+                    if (const auto *entries =
+                          hanging_node_constraints.get_constraint_entries(i))
+                      {
+                        wi = 0.;
+                        for (const auto &[j, weight] : *entries)
+                          wi += weight * w_ghosted[j];
+                      }
+                    sum += wi * residual[i];
+                    reaction_on_body
+                      [residuals.body_of_dof[owned.index_within_set(i)]][c] +=
+                      wi * residual[i];
+                  }
+                reaction[c] = Utilities::MPI::sum(sum, comm);
+              }
+          }
+    }
+
+    /**
+     * With more than one body, each body's reaction, load and contact force
+     * (-B^T lambda on its DoFs), summed over the ranks, into `record`.
+     */
+    void
+    add_body_balances(
+      ReactionRecord                           &record,
+      const BodyResiduals                      &residuals,
+      const std::vector<std::array<double, 3>> &reaction_on_body,
+      const TrilinosWrappers::MPI::Vector      *contact_forces,
+      const IndexSet                           &owned,
+      const unsigned int                        dim,
+      const MPI_Comm                            comm)
+    {
+      const unsigned int                 n_bodies = residuals.n_bodies;
+      std::vector<std::array<double, 3>> contact_on_body(n_bodies);
+      if (n_bodies > 1 && contact_forces != nullptr)
+        for (unsigned int k = 0; k < owned.n_elements(); ++k)
+          contact_on_body[residuals.body_of_dof[k]]
+                         [residuals.component_of_dof[k]] -=
+            (*contact_forces)[owned.nth_index_in_set(k)];
+      if (n_bodies > 1)
+        for (unsigned int b = 0; b < n_bodies; ++b)
+          {
+            record.on_body.emplace_back();
+            record.load_on_body.emplace_back();
+            record.contact_on_body.emplace_back();
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                record.on_body[b][c] =
+                  Utilities::MPI::sum(reaction_on_body[b][c], comm);
+                record.load_on_body[b][c] =
+                  Utilities::MPI::sum(residuals.load_on_body[b][c], comm);
+                record.contact_on_body[b][c] =
+                  Utilities::MPI::sum(contact_on_body[b][c], comm);
+              }
+          }
+    }
+  } // namespace
+
   template <int dim>
   ReactionRecord
   compute_reactions(const Mapping<dim>              &mapping,
@@ -255,127 +355,26 @@ namespace dualcontact
     // tangential DoFs are free, and at a node shared with the contact
     // boundary the free components carry the contact force, not a reaction.
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
-    const unsigned int n_dofs = dof_handler.get_fe().n_dofs_per_cell();
-    std::vector<types::global_dof_index> dof_indices(n_dofs);
-    TrilinosWrappers::MPI::Vector residual(dof_handler.locally_owned_dofs(),
-                                           comm);
-    Vector<double>                u(n_dofs), r(n_dofs);
-    ReactionRecord                record;
-    std::array<double, 3>         load{};
-    // the bodies (one unless the mesh has parts that share no vertex):
-    // each owned DoF's body, from a locally owned cell that holds it
-    const IndexSet                 &owned = dof_handler.locally_owned_dofs();
-    const std::vector<unsigned int> body_of_coarse_cell =
-      bodies_of_coarse_cells(dof_handler.get_triangulation());
-    const unsigned int n_bodies =
-      1 +
-      *std::max_element(body_of_coarse_cell.begin(), body_of_coarse_cell.end());
-    std::vector<std::array<double, 3>> load_on_body(n_bodies),
-      reaction_on_body(n_bodies);
-    std::vector<unsigned int> body_of_dof(owned.n_elements(), 0),
-      component_of_dof(owned.n_elements(), 0);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          local.assemble(cell, false);
-          cell->get_dof_values(solution, u);
-          local.matrix.vmult(r, u);
-          r -= local.rhs;
-          cell->get_dof_indices(dof_indices);
-          residual.add(dof_indices, r);
-          local.add_resultant(load);
-          const unsigned int body = body_of<dim>(cell, body_of_coarse_cell);
-          if (n_bodies > 1)
-            {
-              local.add_resultant(load_on_body[body]);
-              for (unsigned int k = 0; k < n_dofs; ++k)
-                if (owned.is_element(dof_indices[k]))
-                  {
-                    const auto index   = owned.index_within_set(dof_indices[k]);
-                    body_of_dof[index] = body;
-                    component_of_dof[index] =
-                      dof_handler.get_fe().system_to_component_index(k).first;
-                  }
-            }
-        }
-    residual.compress(VectorOperation::add);
-    if (contact_forces != nullptr)
-      residual += *contact_forces;
+    const BodyResiduals residuals =
+      body_residuals(mapping, dof_handler, scene, solution, contact_forces);
+    ReactionRecord record;
     for (unsigned int c = 0; c < dim; ++c)
-      record.applied_load[c] = Utilities::MPI::sum(load[c], comm);
-
-    // The reaction of support id along e_c is R . w, w = 1 at the DoFs of
-    // component c the support constrains and 0 at the other DoFs that are
-    // not hanging; at a hanging DoF w interpolates its masters, so that w
-    // is a finite element function: R vanishes against every such function
-    // that is zero on the supports and the contact nodes (the equations),
-    // which makes the reactions, the contact force and the loads balance
-    // exactly. A DoF two supports constrain counts for the first ('fixed'
-    // before 'normal fixed', the order the constraints were made in).
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    std::set<types::global_dof_index> claimed;
-    TrilinosWrappers::MPI::Vector     w(owned, comm),
-      w_ghosted(owned, relevant, comm);
-    for (const BoundaryCondition condition :
-         {BoundaryCondition::fixed, BoundaryCondition::normal_fixed})
-      for (const types::boundary_id id : scene.ids_with(condition))
-        {
-          std::array<double, 3> &reaction = record.on_id[id];
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              ComponentMask mask(dim, false);
-              mask.set(c, true);
-              w = 0.;
-              for (const auto i :
-                   DoFTools::extract_boundary_dofs(dof_handler, mask, {id}))
-                if (owned.is_element(i) && constraints.is_constrained(i) &&
-                    !hanging_node_constraints.is_constrained(i) &&
-                    claimed.insert(i).second)
-                  w[i] = 1.;
-              w.compress(VectorOperation::insert);
-              w_ghosted  = w;
-              double sum = 0.;
-              for (const auto i : owned)
-                {
-                  double wi = w[i];
-                  if (const auto *entries =
-                        hanging_node_constraints.get_constraint_entries(i))
-                    {
-                      wi = 0.;
-                      for (const auto &[j, weight] : *entries)
-                        wi += weight * w_ghosted[j];
-                    }
-                  sum += wi * residual[i];
-                  reaction_on_body[body_of_dof[owned.index_within_set(i)]][c] +=
-                    wi * residual[i];
-                }
-              reaction[c] = Utilities::MPI::sum(sum, comm);
-            }
-        }
-    // the contact forces on each body: -B^T lambda on its DoFs
-    std::vector<std::array<double, 3>> contact_on_body(n_bodies);
-    if (n_bodies > 1 && contact_forces != nullptr)
-      for (unsigned int k = 0; k < owned.n_elements(); ++k)
-        contact_on_body[body_of_dof[k]][component_of_dof[k]] -=
-          (*contact_forces)[owned.nth_index_in_set(k)];
-    if (n_bodies > 1)
-      for (unsigned int b = 0; b < n_bodies; ++b)
-        {
-          record.on_body.emplace_back();
-          record.load_on_body.emplace_back();
-          record.contact_on_body.emplace_back();
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              record.on_body[b][c] =
-                Utilities::MPI::sum(reaction_on_body[b][c], comm);
-              record.load_on_body[b][c] =
-                Utilities::MPI::sum(load_on_body[b][c], comm);
-              record.contact_on_body[b][c] =
-                Utilities::MPI::sum(contact_on_body[b][c], comm);
-            }
-        }
+      record.applied_load[c] = Utilities::MPI::sum(residuals.load[c], comm);
+    std::vector<std::array<double, 3>> reaction_on_body(residuals.n_bodies);
+    support_reactions(dof_handler,
+                      scene,
+                      constraints,
+                      hanging_node_constraints,
+                      residuals,
+                      record,
+                      reaction_on_body);
+    add_body_balances(record,
+                      residuals,
+                      reaction_on_body,
+                      contact_forces,
+                      dof_handler.locally_owned_dofs(),
+                      dim,
+                      comm);
     return record;
   }
 

@@ -312,12 +312,69 @@ namespace dualcontact
       entities_section();
       void
       entity(const unsigned int d);
+      /**
+       * Where the scan of a $Nodes or $Elements section stands: its header
+       * (section_header()), the items of the blocks read so far, the
+       * current block's header line, count and (for elements) type, and
+       * the smallest and largest element tag so far.
+       */
+      struct SectionScan
+      {
+        unsigned long      start; // the line of the section's marker
+        long long          n_blocks, total, min_tag, max_tag;
+        long long          n_read     = 0;
+        long long          n          = 0;
+        unsigned long      block_line = 0;
+        const ElementType *type       = nullptr;
+        long long          smallest = largest_int, largest = 0;
+      };
+
       void
       nodes_section();
+      /** A 4.x node block's header: sets section.n and .block_line;
+       * returns its parametric flag. */
+      long long
+      node_block_header(SectionScan       &section,
+                        const long long    block,
+                        const std::string &in_block);
+      /** A 4.1 node block: the tags, one a line, then the coordinates. */
+      void
+      node_block_41(const SectionScan &section,
+                    const std::string &in_block,
+                    const std::size_t  n_coordinates,
+                    const std::string &coordinates);
+      /** A 2.x or 4.0 node block: a line per node, tag and coordinates. */
+      void
+      node_lines(const SectionScan &section,
+                 const std::string &in_block,
+                 const std::size_t  n_coordinates,
+                 const std::string &coordinates);
+      /** $EndNodes where it should be, and the counts as announced. */
+      void
+      end_of_nodes(const SectionScan &section);
       void
       node_lookup(const long long min_tag, const long long max_tag);
       void
       elements_section();
+      /** The 2.x $Elements section: a line per element. */
+      void
+      element_lines_2(SectionScan &section);
+      /** A 4.x element block's header: sets section.n, .type and
+       * .block_line; returns the element type's number. */
+      long long
+      element_block_header(SectionScan       &section,
+                           const long long    block,
+                           const std::string &in_block);
+      /** The lines of a 4.x element block: tag and nodes. */
+      void
+      element_lines(SectionScan       &section,
+                    const long long    block,
+                    const std::string &in_block,
+                    const long long    number);
+      /** $EndElements where it should be, the counts and the tag range as
+       * announced. */
+      void
+      end_of_elements(const SectionScan &section);
       void
       element_nodes(const std::size_t first,
                     const long long   element,

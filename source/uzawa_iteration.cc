@@ -226,6 +226,105 @@ namespace dualcontact
       "moment does not tip or roll it off), or hold the body by a "
       "prescribed displacement (<Boundary conditions/Conditions>); more "
       "steps or another <Solver/Augmentation parameter> cannot help";
+
+    /** Pass `text` to the observer, if there is one. */
+    void
+    note(IterationObserver *observer, const std::string &text)
+    {
+      if (observer != nullptr)
+        observer->note(text);
+    }
+
+    /**
+     * Some free motions keep the start's value: along them the proximal
+     * term pulls toward v_start, not toward the last v. The force along
+     * them that a weak hold leaves (between two bodies, the normals'
+     * discretisation error) then moves them once by F / chi, not by F / chi
+     * in every step; and a body's motion relative to another is not left
+     * where the first, inexact Newton solve put it (doc/theory.md §6).
+     * Against the obstacle alone, along the motions held by nothing at
+     * all, the last v is the anchor.
+     */
+    void
+    anchor_at_start(const ContactSystem                 &system,
+                    const TrilinosWrappers::MPI::Vector &v_start,
+                    TrilinosWrappers::MPI::Vector       &v_previous)
+    {
+      if (system.free_motions != nullptr && system.anchored_at_start != nullptr)
+        for (unsigned int i = 0; i < system.free_motions->size(); ++i)
+          if ((*system.anchored_at_start)[i])
+            {
+              const TrilinosWrappers::MPI::Vector &w =
+                (*system.free_motions)[i];
+              v_previous.add(w * v_start - w * v_previous, w);
+            }
+    }
+
+    /**
+     * The relative change of g from `threshold_before`, against the largest
+     * of the new g and `threshold_scale`, over the contact nodes of all
+     * ranks.
+     */
+    template <int dim>
+    double
+    threshold_change_on_path(const ContactSet<dim>     &contact,
+                             const std::vector<double> &threshold_before,
+                             const double               threshold_scale,
+                             const MPI_Comm             comm)
+    {
+      double sums[2] = {0., 0.};
+      for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
+        {
+          sums[0] += std::pow(contact.threshold[s] - threshold_before[s], 2);
+          sums[1] += contact.threshold[s] * contact.threshold[s];
+        }
+      Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                          comm,
+                          ArrayView<double>(sums, 2));
+      return relative_change(std::sqrt(sums[0]),
+                             std::max(std::sqrt(sums[1]), threshold_scale));
+    }
+
+    /** The Newton figures and the time of Uzawa step k into `record`. */
+    void
+    record_step(IterationRecord        &record,
+                const unsigned int      k,
+                const NewtonStatistics &newton_statistics,
+                const double            time)
+    {
+      record.uzawa_step      = k;
+      record.newton_steps    = newton_statistics.newton_steps;
+      record.newton_at_floor = newton_statistics.at_floor;
+      record.cg_iterations   = newton_statistics.cg_iterations;
+      record.amg_setups      = newton_statistics.amg_setups;
+      record.time            = time;
+    }
+
+    /**
+     * The last step of `history` into the solve's statistics: the counts,
+     * the active set, the observed contraction rate and the error it
+     * implies.
+     */
+    void
+    add_step(ContactStatistics                  &statistics,
+             const std::vector<IterationRecord> &history)
+    {
+      const std::size_t      k      = history.size();
+      const IterationRecord &record = history.back();
+      statistics.uzawa_steps        = k;
+      statistics.newton_steps += record.newton_steps;
+      statistics.cg_iterations += record.cg_iterations;
+      statistics.amg_setups += record.amg_setups;
+      statistics.n_active = record.n_active;
+      statistics.n_stick  = record.n_stick;
+      statistics.n_slip   = record.n_slip;
+      statistics.change_g = record.change_g;
+      if (k > 1 && history[k - 2].change_l1 > 0.)
+        statistics.rate =
+          std::min(record.change_l1 / history[k - 2].change_l1, 0.999);
+      statistics.estimated_l1_error =
+        record.change_l1 * statistics.rate / (1. - statistics.rate);
+    }
   } // namespace
 
   template <int dim>
@@ -378,6 +477,110 @@ namespace dualcontact
   }
 
   template <int dim>
+  NewtonStatistics
+  UzawaIteration<dim>::proximal_step_unless_drifting(
+    const ContactSystem                 &system,
+    const ContactSet<dim>               &contact,
+    const TrilinosWrappers::MPI::Vector &v_previous,
+    TrilinosWrappers::MPI::Vector       &v,
+    const unsigned int                   k,
+    IterationObserver                   *observer,
+    const std::vector<IterationRecord>  &history)
+  {
+    try
+      {
+        return proximal_step(system, contact, v_previous, v, k, observer);
+      }
+    catch (const ExceptionBase &exception)
+      {
+        // a Newton failure while v drifts: the drift is the cause
+        if (!drifts(history))
+          throw;
+        std::ostringstream message;
+        exception.print_info(message);
+        std::string failure = Utilities::trim(message.str());
+        failure             = failure.substr(0, failure.find(" Likely causes"));
+        AssertThrow(false,
+                    ExcMessage("The contact solve cannot converge: " +
+                               drift_cause + ". It stopped here: " + failure));
+      }
+    return NewtonStatistics();
+  }
+
+  template <int dim>
+  IterationRecord
+  UzawaIteration<dim>::update_multipliers_on_path(
+    const ContactSystem                 &system,
+    ContactSet<dim>                     &contact,
+    const TrilinosWrappers::MPI::Vector &v_previous,
+    const TrilinosWrappers::MPI::Vector &v,
+    const bool                           update_threshold,
+    const double                         threshold_scale)
+  {
+    std::vector<double> threshold_before;
+    if (threshold_scale > 0.)
+      threshold_before = contact.threshold;
+    IterationRecord record =
+      update_multipliers(system, contact, v_previous, v, update_threshold);
+    // along a path, the change of g against the previous step's g too
+    if (threshold_scale > 0.)
+      record.change_g = threshold_change_on_path(contact,
+                                                 threshold_before,
+                                                 threshold_scale,
+                                                 v.get_mpi_communicator());
+    return record;
+  }
+
+  template <int dim>
+  bool
+  UzawaIteration<dim>::stop_at_roundoff_floor(
+    const std::vector<IterationRecord> &history,
+    const bool                          friction,
+    const bool                          update_threshold,
+    const double                        threshold_tolerance,
+    ContactStatistics                  &statistics,
+    IterationObserver                  *observer) const
+  {
+    const IterationRecord &record = history.back();
+    if (!at_roundoff_floor(history, friction) ||
+        (update_threshold &&
+         !(record.change_g <=
+           std::max(threshold_tolerance, 1e3 * parameters.uzawa_tolerance))))
+      return false;
+    statistics.at_roundoff_floor = true;
+    note(observer,
+         "Uzawa: stopped at the round-off floor of the inner "
+         "solves, accuracy reached " +
+           format_number(largest_change(record, friction)) +
+           " (the multipliers' and v's relative changes; <Solver/Uzawa "
+           "tolerance> asks " +
+           format_number(parameters.uzawa_tolerance) +
+           "): the Newton steps no longer improve v, and the violation "
+           "(" +
+           format_number(record.violation) + ") and complementarity (" +
+           format_number(record.complementarity) + ") are below the tolerance");
+    return true;
+  }
+
+  template <int dim>
+  void
+  UzawaIteration<dim>::lower_proximal_weight(
+    ContactSystem                      &step_system,
+    const std::vector<IterationRecord> &history,
+    const bool                          friction,
+    IterationObserver                  *observer)
+  {
+    const double rate = mean_rate(history, friction, 3);
+    step_system.chi_scale /= 10.;
+    newton.reset(); // a new matrix
+    note(observer,
+         "Uzawa: contraction rate " + format_number(rate) +
+           " per step, a mode that hardly any contact term holds: the "
+           "proximal weight is lowered to " +
+           format_number(step_system.chi_scale) + " chi");
+  }
+
+  template <int dim>
   ContactStatistics
   UzawaIteration<dim>::solve(const ContactSystem           &system,
                              ContactSet<dim>               &contact,
@@ -408,142 +611,55 @@ namespace dualcontact
         std::max(threshold_norm(contact, v.get_mpi_communicator()),
                  system.previous.g_norm) :
         0.;
-    std::vector<double> threshold_before;
-    const auto          say = [observer](const std::string &text) {
-      if (observer != nullptr)
-        observer->note(text);
-    };
     for (unsigned int k = 1; k <= parameters.max_uzawa_steps; ++k)
       {
         Timer timer(v.get_mpi_communicator(), true);
         v_previous = v;
-        // Some free motions keep the start's value: along them the
-        // proximal term pulls toward v_start, not toward the last v. The
-        // force along them that a weak hold leaves (between two bodies, the
-        // normals' discretisation error) then moves them once by F / chi,
-        // not by F / chi in every step; and a body's motion relative to
-        // another is not left where the first, inexact Newton solve put it
-        // (doc/theory.md §6). Against the obstacle alone, along the motions
-        // held by nothing at all, the last v is the anchor.
-        if (system.free_motions != nullptr &&
-            system.anchored_at_start != nullptr)
-          for (unsigned int i = 0; i < system.free_motions->size(); ++i)
-            if ((*system.anchored_at_start)[i])
-              {
-                const TrilinosWrappers::MPI::Vector &w =
-                  (*system.free_motions)[i];
-                v_previous.add(w * v_start - w * v_previous, w);
-              }
-        NewtonStatistics newton_statistics;
-        try
-          {
-            newton_statistics =
-              proximal_step(step_system, contact, v_previous, v, k, observer);
-          }
-        catch (const ExceptionBase &exception)
-          {
-            // a Newton failure while v drifts: the drift is the cause
-            if (!drifts(history))
-              throw;
-            std::ostringstream message;
-            exception.print_info(message);
-            std::string failure = Utilities::trim(message.str());
-            failure = failure.substr(0, failure.find(" Likely causes"));
-            AssertThrow(false,
-                        ExcMessage(
-                          "The contact solve cannot converge: " + drift_cause +
-                          ". It stopped here: " + failure));
-          }
-        const auto update_start = std::chrono::steady_clock::now();
-        if (threshold_scale > 0.)
-          threshold_before = contact.threshold;
-        IterationRecord record = update_multipliers(
-          step_system, contact, v_previous, v, update_threshold);
-        // along a path, the change of g against the previous step's g too
-        if (threshold_scale > 0.)
-          {
-            double sums[2] = {0., 0.};
-            for (unsigned int s = 0; s < contact.n_local_nodes(); ++s)
-              {
-                sums[0] +=
-                  std::pow(contact.threshold[s] - threshold_before[s], 2);
-                sums[1] += contact.threshold[s] * contact.threshold[s];
-              }
-            Utilities::MPI::sum(ArrayView<const double>(sums, 2),
-                                v.get_mpi_communicator(),
-                                ArrayView<double>(sums, 2));
-            record.change_g =
-              relative_change(std::sqrt(sums[0]),
-                              std::max(std::sqrt(sums[1]), threshold_scale));
-          }
+        anchor_at_start(system, v_start, v_previous);
+        const NewtonStatistics newton_statistics =
+          proximal_step_unless_drifting(
+            step_system, contact, v_previous, v, k, observer, history);
+        const auto      update_start = std::chrono::steady_clock::now();
+        IterationRecord record       = update_multipliers_on_path(step_system,
+                                                            contact,
+                                                            v_previous,
+                                                            v,
+                                                            update_threshold,
+                                                            threshold_scale);
         statistics.times += newton_statistics.times;
         statistics.times.multipliers +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                         update_start)
             .count();
         timer.stop();
-        record.uzawa_step      = k;
-        record.newton_steps    = newton_statistics.newton_steps;
-        record.newton_at_floor = newton_statistics.at_floor;
-        record.cg_iterations   = newton_statistics.cg_iterations;
-        record.amg_setups      = newton_statistics.amg_setups;
-        record.time            = timer.wall_time();
+        record_step(record, k, newton_statistics, timer.wall_time());
         if (observer != nullptr)
           observer->uzawa_step(record, contact.friction, update_threshold);
         history.push_back(record);
-
-        statistics.uzawa_steps = k;
-        statistics.newton_steps += record.newton_steps;
-        statistics.cg_iterations += record.cg_iterations;
-        statistics.amg_setups += record.amg_setups;
-        statistics.n_active = record.n_active;
-        statistics.n_stick  = record.n_stick;
-        statistics.n_slip   = record.n_slip;
-        statistics.change_g = record.change_g;
-        // the observed contraction rate, and the error it implies
-        if (k > 1 && history[k - 2].change_l1 > 0.)
-          statistics.rate =
-            std::min(record.change_l1 / history[k - 2].change_l1, 0.999);
-        statistics.estimated_l1_error =
-          record.change_l1 * statistics.rate / (1. - statistics.rate);
+        add_step(statistics, history);
 
         if (converged(
               record, contact.friction, update_threshold, threshold_tolerance))
           return statistics;
-        if (at_roundoff_floor(history, contact.friction) &&
-            (!update_threshold ||
-             record.change_g <=
-               std::max(threshold_tolerance, 1e3 * parameters.uzawa_tolerance)))
-          {
-            statistics.at_roundoff_floor = true;
-            say("Uzawa: stopped at the round-off floor of the inner "
-                "solves, accuracy reached " +
-                format_number(largest_change(record, contact.friction)) +
-                " (the multipliers' and v's relative changes; <Solver/Uzawa "
-                "tolerance> asks " +
-                format_number(parameters.uzawa_tolerance) +
-                "): the Newton steps no longer improve v, and the violation "
-                "(" +
-                format_number(record.violation) + ") and complementarity (" +
-                format_number(record.complementarity) +
-                ") are below the tolerance");
-            return statistics;
-          }
+        if (stop_at_roundoff_floor(history,
+                                   contact.friction,
+                                   update_threshold,
+                                   threshold_tolerance,
+                                   statistics,
+                                   observer))
+          return statistics;
         // A slow, steady contraction: a mode of v that only the proximal
         // term holds. Lower its weight (doc/theory.md §3.2).
         if (contracts_slowly(history, contact.friction) &&
             k >= lowered_at + 4 &&
             step_system.chi_scale > 1.5 * minimum_chi_scale)
           {
-            const double rate = mean_rate(history, contact.friction, 3);
-            step_system.chi_scale /= 10.;
+            lower_proximal_weight(step_system,
+                                  history,
+                                  contact.friction,
+                                  observer);
             statistics.chi_scale = step_system.chi_scale;
             lowered_at           = k;
-            newton.reset(); // a new matrix
-            say("Uzawa: contraction rate " + format_number(rate) +
-                " per step, a mode that hardly any contact term holds: the "
-                "proximal weight is lowered to " +
-                format_number(step_system.chi_scale) + " chi");
           }
       }
 

@@ -98,6 +98,56 @@ namespace dualcontact
     static constexpr double minimum_chi_scale = 1e-4;
 
   private:
+    /**
+     * proximal_step(); a Newton failure while v drifts (by `history`)
+     * throws with the drift as its cause.
+     */
+    NewtonStatistics
+    proximal_step_unless_drifting(
+      const ContactSystem                 &system,
+      const ContactSet<dim>               &contact,
+      const TrilinosWrappers::MPI::Vector &v_previous,
+      TrilinosWrappers::MPI::Vector       &v,
+      const unsigned int                   k,
+      IterationObserver                   *observer,
+      const std::vector<IterationRecord>  &history);
+
+    /**
+     * update_multipliers(); with a `threshold_scale` (merged with the
+     * threshold iteration on a later step of a load path), the change of g
+     * measured against it too.
+     */
+    IterationRecord
+    update_multipliers_on_path(const ContactSystem                 &system,
+                               ContactSet<dim>                     &contact,
+                               const TrilinosWrappers::MPI::Vector &v_previous,
+                               const TrilinosWrappers::MPI::Vector &v,
+                               const bool   update_threshold,
+                               const double threshold_scale);
+
+    /**
+     * Whether solve() stops at the round-off floor of the inner solves
+     * with the constraint (and the threshold) met; if so, marks
+     * `statistics` and says so to the observer.
+     */
+    bool
+    stop_at_roundoff_floor(const std::vector<IterationRecord> &history,
+                           const bool                          friction,
+                           const bool                          update_threshold,
+                           const double       threshold_tolerance,
+                           ContactStatistics &statistics,
+                           IterationObserver *observer) const;
+
+    /**
+     * Lower the proximal weight of `step_system` tenfold (a new matrix),
+     * and say so with the contraction rate of `history`.
+     */
+    void
+    lower_proximal_weight(ContactSystem                      &step_system,
+                          const std::vector<IterationRecord> &history,
+                          const bool                          friction,
+                          IterationObserver                  *observer);
+
     /** The Newton tolerance of step k, and the one it shrinks to. */
     double
     newton_envelope(const unsigned int k) const;

@@ -180,6 +180,15 @@ namespace dualcontact
     prm.leave_subsection();
   }
 
+  // the stages of check(), after it
+  static void
+  check_contact_pairs(const BoundaryParameters &boundary,
+                      const GeometryParameters &geometry,
+                      const unsigned int        n_ids,
+                      const std::string        &shape);
+  static void
+  check_boundary_data(const BoundaryParameters &boundary);
+
   void
   BoundaryParameters::check(const Parameters &parameters) const
   {
@@ -225,10 +234,25 @@ namespace dualcontact
                        "<Discretization/Polynomial degree> to 1, or the "
                        "coupling to dual mortar.",
                        exit_inconsistent);
+    check_contact_pairs(*this, geometry, n_ids, shape);
+    check_boundary_data(*this);
+  }
+
+  /**
+   * The contact pairs: two different ids of the geometry (of `n_ids`, the
+   * geometry `shape`'s, unless a mesh file gives them), both free or loaded
+   * by a traction, each in one pair only.
+   */
+  static void
+  check_contact_pairs(const BoundaryParameters &boundary,
+                      const GeometryParameters &geometry,
+                      const unsigned int        n_ids,
+                      const std::string        &shape)
+  {
     // a pair: two different ids of the geometry, both free (the pair is
     // their condition) or loaded by a traction, each in one pair only
     std::map<boundary_id, unsigned int> in_pairs;
-    for (const auto &[slave, master] : contact_pairs)
+    for (const auto &[slave, master] : boundary.contact_pairs)
       {
         const std::string pair = "The entry <Boundary conditions/Contact "
                                  "pairs> pairs " +
@@ -246,13 +270,13 @@ namespace dualcontact
                                  " (its ids are 0 to " +
                                  std::to_string(n_ids - 1) + ").",
                                exit_inconsistent);
-            if (condition(id) != BoundaryCondition::free &&
-                condition(id) != BoundaryCondition::traction)
+            if (boundary.condition(id) != BoundaryCondition::free &&
+                boundary.condition(id) != BoundaryCondition::traction)
               throw InputError(pair +
                                  ", but <Boundary conditions/"
                                  "Conditions> gives id " +
                                  std::to_string(id) + " the condition '" +
-                                 to_string(condition(id)) +
+                                 to_string(boundary.condition(id)) +
                                  "': a pair's ids are free there, or "
                                  "loaded by a traction.",
                                exit_inconsistent);
@@ -264,23 +288,33 @@ namespace dualcontact
                                exit_inconsistent);
           }
       }
+  }
 
+  /**
+   * Displacements for 'fixed' ids only, tractions for 'traction' ids only,
+   * and a traction for each of these.
+   */
+  static void
+  check_boundary_data(const BoundaryParameters &boundary)
+  {
     const auto check_data = [&](const std::map<boundary_id, std::string> &data,
                                 const BoundaryCondition wanted,
                                 const std::string      &entry) {
       for (const auto &[id, expression] : data)
-        if (condition(id) != wanted)
+        if (boundary.condition(id) != wanted)
           throw InputError("The entry <Boundary conditions/" + entry +
                              "> gives data for boundary id " +
                              std::to_string(id) + ", whose condition is '" +
-                             to_string(condition(id)) + "', not '" +
+                             to_string(boundary.condition(id)) + "', not '" +
                              to_string(wanted) + "'.",
                            exit_inconsistent);
     };
-    check_data(displacements, BoundaryCondition::fixed, "Displacements");
-    check_data(tractions, BoundaryCondition::traction, "Tractions");
-    for (const boundary_id id : ids_with(BoundaryCondition::traction))
-      if (tractions.count(id) == 0)
+    check_data(boundary.displacements,
+               BoundaryCondition::fixed,
+               "Displacements");
+    check_data(boundary.tractions, BoundaryCondition::traction, "Tractions");
+    for (const boundary_id id : boundary.ids_with(BoundaryCondition::traction))
+      if (boundary.tractions.count(id) == 0)
         throw InputError("Boundary id " + std::to_string(id) +
                            " has the condition 'traction' but the entry "
                            "<Boundary conditions/Tractions> gives no traction "
