@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "columns.h"
+#include "loop_figure.h"
 
 namespace dualcontact
 {
