@@ -46,6 +46,117 @@ namespace dualcontact
           exit_inconsistent);
       return *forest;
     }
+
+    // The forest's files with their sizes and CRC-32, which a resumed run
+    // checks before deal.II and p4est read them: p4est stops the whole
+    // program on a file it cannot read, and deal.II takes what it reads for
+    // the sizes of the fields, where a file cut short, or of zeros after a
+    // crash, is a damaged checkpoint.
+    std::string
+    forest_files(const std::string &building)
+    {
+      namespace fs = std::filesystem;
+      std::map<std::string, std::uintmax_t> sizes;
+      for (const auto &entry : fs::directory_iterator(building))
+        if (entry.path().filename().string().compare(0, 4, "mesh") == 0)
+          sizes[entry.path().filename().string()] = entry.file_size();
+      std::string files;
+      for (const auto &[name, size] : sizes)
+        files += (files.empty() ? "" : " ") + name + " " +
+                 std::to_string(size) + " " +
+                 file_checksum(building + "/" + name);
+      return files;
+    }
+
+    /** The pvd files' records: a count, then as many times and files. */
+    std::map<std::string, std::vector<std::pair<double, std::string>>>
+    saved_pvd_records(const CheckpointRecord &record)
+    {
+      std::map<std::string, std::vector<std::pair<double, std::string>>>
+        saved_pvd;
+      for (const auto &[key, value] : record.with_prefix("pvd_"))
+        {
+          const std::vector<std::string> words = record.words(key);
+          unsigned long long             n     = 0;
+          if (!read_whole_number(words[0], n) || words.size() != 1 + 2 * n)
+            throw record.damaged(key,
+                                 "not a count and as many times and files");
+          auto &records = saved_pvd[key.substr(4)];
+          for (std::size_t i = 1; i < words.size(); i += 2)
+            {
+              double pvd_time = 0.;
+              if (!read_number(words[i], pvd_time) || words[i + 1].empty())
+                throw record.damaged(key,
+                                     "not a count and as many times and files");
+              records.emplace_back(pvd_time, words[i + 1]);
+            }
+        }
+      return saved_pvd;
+    }
+
+    /**
+     * The forest's files, each as it was written: its size and CRC-32
+     * (p4est stops the program on a file it cannot read, deal.II trusts
+     * the sizes it reads from the fields' file). Rank 0 reads them and
+     * tells the others what it found, so that all throw together.
+     */
+    void
+    check_forest_files(const CheckpointRecord &record,
+                       const std::string      &folder,
+                       const MPI_Comm          mpi_communicator)
+    {
+      namespace fs                         = std::filesystem;
+      const std::vector<std::string> files = record.words("files");
+      std::set<std::string>          names;
+      for (std::size_t i = 0; i + 2 < files.size(); i += 3)
+        {
+          unsigned long long size = 0;
+          if (files[i].compare(0, 4, "mesh") != 0 ||
+              files[i].find('/') != std::string::npos ||
+              !read_whole_number(files[i + 1], size) ||
+              files[i + 2].size() != 8 ||
+              files[i + 2].find_first_not_of("0123456789abcdef") !=
+                std::string::npos)
+            break;
+          names.insert(files[i]);
+        }
+      if (files.size() % 3 != 0 || names.size() != files.size() / 3 ||
+          names.count("mesh") == 0 || names.count("mesh.info") == 0)
+        throw record.damaged("files",
+                             "not the forest's files mesh, mesh.info, ... each "
+                             "with its size and CRC-32");
+      std::string file_damage;
+      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        for (std::size_t i = 0; i < files.size() && file_damage.empty(); i += 3)
+          {
+            const std::string file = folder + "/" + files[i];
+            std::error_code   error;
+            const auto        size = fs::file_size(file, error);
+            std::string       checksum;
+            if (error || (checksum = file_checksum(file)).empty())
+              file_damage = damaged_checkpoint(file,
+                                               "it is missing or cannot be "
+                                               "read")
+                              .what();
+            else if (std::to_string(size) != files[i + 1])
+              file_damage =
+                damaged_checkpoint(file,
+                                   "it has " + std::to_string(size) +
+                                     " bytes, and state.txt gives " +
+                                     files[i + 1] + " (it was cut short)")
+                  .what();
+            else if (checksum != files[i + 2])
+              file_damage =
+                damaged_checkpoint(file,
+                                   "its CRC-32 is " + checksum +
+                                     ", and state.txt gives " + files[i + 2] +
+                                     " (its bytes changed)")
+                  .what();
+          }
+      file_damage = Utilities::MPI::broadcast(mpi_communicator, file_damage, 0);
+      if (!file_damage.empty())
+        throw InputError(file_damage, exit_cannot_read_file);
+    }
   } // namespace
 
   template <int dim>
@@ -98,6 +209,32 @@ namespace dualcontact
     MPI_Barrier(mpi_communicator); // (every rank's part written)
 
     // the scalars of the path and of the report
+    CheckpointRecord record = checkpoint_record(step, control);
+    if (root)
+      {
+        record.set("files", forest_files(building));
+        record.write(building + "/state.txt");
+        std::ofstream(building + "/parameters.prm")
+          << parameters.parameter_file;
+        // the new checkpoint replaces the old one only now that it is whole
+        fs::remove_all(folder);
+        fs::rename(building, folder);
+      }
+    MPI_Barrier(mpi_communicator);
+
+    // The run goes on from what it wrote, as a resumed run does: the mesh
+    // read back numbers its cells, and so its DoFs, in the order of the
+    // forest, which a mesh adapted at every step does not keep (its cells'
+    // order depends on which were coarsened when), and the order changes
+    // the AMG and CG's rounding. Both runs then give the same numbers.
+    load_mesh_and_fields(folder, record);
+  }
+
+  template <int dim>
+  CheckpointRecord
+  ContactProblem<dim>::checkpoint_record(const StepRecord  &step,
+                                         const StepControl &control) const
+  {
     CheckpointRecord record;
     record.set("step", std::to_string(step.step));
     record.set("time", step.time);
@@ -130,38 +267,7 @@ namespace dualcontact
           text << ' ' << time << ' ' << file;
         record.set("pvd_" + name, text.str());
       }
-    if (root)
-      {
-        // the forest's files with their sizes and CRC-32, which a resumed
-        // run checks before deal.II and p4est read them: p4est stops the
-        // whole program on a file it cannot read, and deal.II takes what
-        // it reads for the sizes of the fields, where a file cut short, or
-        // of zeros after a crash, is a damaged checkpoint
-        std::map<std::string, std::uintmax_t> sizes;
-        for (const auto &entry : fs::directory_iterator(building))
-          if (entry.path().filename().string().compare(0, 4, "mesh") == 0)
-            sizes[entry.path().filename().string()] = entry.file_size();
-        std::string files;
-        for (const auto &[name, size] : sizes)
-          files += (files.empty() ? "" : " ") + name + " " +
-                   std::to_string(size) + " " +
-                   file_checksum(building + "/" + name);
-        record.set("files", files);
-        record.write(building + "/state.txt");
-        std::ofstream(building + "/parameters.prm")
-          << parameters.parameter_file;
-        // the new checkpoint replaces the old one only now that it is whole
-        fs::remove_all(folder);
-        fs::rename(building, folder);
-      }
-    MPI_Barrier(mpi_communicator);
-
-    // The run goes on from what it wrote, as a resumed run does: the mesh
-    // read back numbers its cells, and so its DoFs, in the order of the
-    // forest, which a mesh adapted at every step does not keep (its cells'
-    // order depends on which were coarsened when), and the order changes
-    // the AMG and CG's rounding. Both runs then give the same numbers.
-    load_mesh_and_fields(folder, record);
+    return record;
   }
 
   template <int dim>
@@ -257,10 +363,9 @@ namespace dualcontact
   ContactProblem<dim>::load_checkpoint(StepControl &control)
   {
     TimerOutput::Scope t(computing_timer, "load checkpoint");
-    namespace fs                = std::filesystem;
-    const std::string directory = parameters.output.directory;
-    const std::string folder    = checkpoint_folder(directory);
-    CheckpointRecord  record;
+    const std::string  directory = parameters.output.directory;
+    const std::string  folder    = checkpoint_folder(directory);
+    CheckpointRecord   record;
     if (!record.read(folder + "/state.txt"))
       throw InputError("There is no checkpoint to resume from in '" +
                          directory +
@@ -298,79 +403,10 @@ namespace dualcontact
     saved_size.contact_force       = record.number("size_contact_force");
     const double       total_time  = record.number("total_time", 0.);
     const std::string &loop_figure = record.text("loop_figure");
-    // the pvd files' records: a count, then as many times and files
-    std::map<std::string, std::vector<std::pair<double, std::string>>>
-      saved_pvd;
-    for (const auto &[key, value] : record.with_prefix("pvd_"))
-      {
-        const std::vector<std::string> words = record.words(key);
-        unsigned long long             n     = 0;
-        if (!read_whole_number(words[0], n) || words.size() != 1 + 2 * n)
-          throw record.damaged(key, "not a count and as many times and files");
-        auto &records = saved_pvd[key.substr(4)];
-        for (std::size_t i = 1; i < words.size(); i += 2)
-          {
-            double pvd_time = 0.;
-            if (!read_number(words[i], pvd_time) || words[i + 1].empty())
-              throw record.damaged(key,
-                                   "not a count and as many times and files");
-            records.emplace_back(pvd_time, words[i + 1]);
-          }
-      }
-    // the forest's files, each as it was written: its size and CRC-32
-    // (p4est stops the program on a file it cannot read, deal.II trusts
-    // the sizes it reads from the fields' file). Rank 0 reads them and
-    // tells the others what it found, so that all throw together.
-    const std::vector<std::string> files = record.words("files");
-    std::set<std::string>          names;
-    for (std::size_t i = 0; i + 2 < files.size(); i += 3)
-      {
-        unsigned long long size = 0;
-        if (files[i].compare(0, 4, "mesh") != 0 ||
-            files[i].find('/') != std::string::npos ||
-            !read_whole_number(files[i + 1], size) ||
-            files[i + 2].size() != 8 ||
-            files[i + 2].find_first_not_of("0123456789abcdef") !=
-              std::string::npos)
-          break;
-        names.insert(files[i]);
-      }
-    if (files.size() % 3 != 0 || names.size() != files.size() / 3 ||
-        names.count("mesh") == 0 || names.count("mesh.info") == 0)
-      throw record.damaged("files",
-                           "not the forest's files mesh, mesh.info, ... each "
-                           "with its size and CRC-32");
-    std::string file_damage;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      for (std::size_t i = 0; i < files.size() && file_damage.empty(); i += 3)
-        {
-          const std::string file = folder + "/" + files[i];
-          std::error_code   error;
-          const auto        size = fs::file_size(file, error);
-          std::string       checksum;
-          if (error || (checksum = file_checksum(file)).empty())
-            file_damage = damaged_checkpoint(file,
-                                             "it is missing or cannot be "
-                                             "read")
-                            .what();
-          else if (std::to_string(size) != files[i + 1])
-            file_damage =
-              damaged_checkpoint(file,
-                                 "it has " + std::to_string(size) +
-                                   " bytes, and state.txt gives " +
-                                   files[i + 1] + " (it was cut short)")
-                .what();
-          else if (checksum != files[i + 2])
-            file_damage =
-              damaged_checkpoint(file,
-                                 "its CRC-32 is " + checksum +
-                                   ", and state.txt gives " + files[i + 2] +
-                                   " (its bytes changed)")
-                .what();
-        }
-    file_damage = Utilities::MPI::broadcast(mpi_communicator, file_damage, 0);
-    if (!file_damage.empty())
-      throw InputError(file_damage, exit_cannot_read_file);
+    // the pvd files' records
+    const auto saved_pvd = saved_pvd_records(record);
+    // the forest's files, each as it was written
+    check_forest_files(record, folder, mpi_communicator);
     record.check_all_taken();
     std::ifstream      saved_file(folder + "/parameters.prm");
     std::ostringstream saved;

@@ -34,9 +34,88 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <utility>
 
 namespace dualcontact
 {
+  namespace
+  {
+    /**
+     * The force on the slave nodes of the contact pair of `slave_id`, and
+     * the direction it is measured along: the resultant of its normal
+     * forces sum_s m_s l1_s n_s, without pressure the mean normal of its
+     * slave nodes.
+     */
+    template <int dim>
+    std::pair<Tensor<1, dim>, Tensor<1, dim>>
+    pair_force_and_direction(const ContactSet<dim>   &contact_set,
+                             const types::boundary_id slave_id,
+                             const MPI_Comm           mpi_communicator)
+    {
+      Tensor<1, dim> force, pressed, facing;
+      for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
+        if (contact_set.nodes[s].pair_slave_id == slave_id)
+          {
+            const ContactNode<dim> &node = contact_set.nodes[s];
+            force += contact_set.nodal_force(s);
+            pressed += node.weight * contact_set.l1[s] * node.normal;
+            facing += node.weight * node.normal;
+          }
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          force[c]   = Utilities::MPI::sum(force[c], mpi_communicator);
+          pressed[c] = Utilities::MPI::sum(pressed[c], mpi_communicator);
+          facing[c]  = Utilities::MPI::sum(facing[c], mpi_communicator);
+        }
+      const Tensor<1, dim> direction = pressed.norm() > 0. ? pressed : facing;
+      return {force, direction};
+    }
+
+    /**
+     * The half-width (2D) or radius (3D) of the contact zone and of its
+     * stick zone, from the nodes of every rank.
+     */
+    template <int dim>
+    void
+    measure_zone_shape(const std::vector<ZoneNode> &local,
+                       const ContactSet<dim>       &contact_set,
+                       const MPI_Comm               mpi_communicator,
+                       ContactZoneRecord           &record)
+    {
+      std::vector<ZoneNode> nodes;
+      for (const auto &part :
+           Utilities::MPI::all_gather(mpi_communicator, local))
+        nodes.insert(nodes.end(), part.begin(), part.end());
+      const ContactZoneShape shape =
+        contact_zone_shape(nodes,
+                           dim - 1,
+                           0.25 * contact_set.min_face_diameter());
+      record.half_width      = shape.width.nodes;
+      record.edge_half_width = shape.width.extrapolated;
+      record.area            = shape.area;
+      record.extent          = shape.extent;
+      record.mirrored        = shape.mirrored;
+      if (contact_set.friction)
+        record.stick_half_width = shape.stick_width;
+    }
+
+    /** The zone's relative errors against the exact values given. */
+    void
+    relative_zone_errors(const ExactSolutionParameters &exact,
+                         ContactZoneRecord             &record)
+    {
+      if (exact.contact_half_width > 0.)
+        record.half_width_error =
+          record.edge_half_width / exact.contact_half_width - 1.;
+      if (exact.stick_half_width > 0.)
+        record.stick_half_width_error =
+          record.stick_half_width / exact.stick_half_width - 1.;
+      if (exact.peak_pressure > 0.)
+        record.peak_pressure_error =
+          record.max_pressure / exact.peak_pressure - 1.;
+    }
+  } // namespace
+
   template <int dim>
   ContactZoneRecord
   ContactProblem<dim>::measure_contact_zone() const
@@ -103,23 +182,9 @@ namespace dualcontact
     record.tangential_force = tangential(on_obstacle, contact_set.normal);
     for (const auto &[slave_id, master_id] : scene.contact_pairs())
       {
-        Tensor<1, dim> force, pressed, facing;
-        for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-          if (contact_set.nodes[s].pair_slave_id == slave_id)
-            {
-              const ContactNode<dim> &node = contact_set.nodes[s];
-              force += contact_set.nodal_force(s);
-              pressed += node.weight * contact_set.l1[s] * node.normal;
-              facing += node.weight * node.normal;
-            }
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            force[c]   = Utilities::MPI::sum(force[c], mpi_communicator);
-            pressed[c] = Utilities::MPI::sum(pressed[c], mpi_communicator);
-            facing[c]  = Utilities::MPI::sum(facing[c], mpi_communicator);
-          }
-        const Tensor<1, dim> direction = pressed.norm() > 0. ? pressed : facing;
-        const double         pair_force =
+        const auto [force, direction] =
+          pair_force_and_direction(contact_set, slave_id, mpi_communicator);
+        const double pair_force =
           direction.norm() > 0. ? force * direction / direction.norm() : 0.;
         record.pair_force.push_back(pair_force);
         record.contact_force += pair_force;
@@ -132,20 +197,7 @@ namespace dualcontact
       record.resultant[c] = resultant[c];
 
     // the half-width (2D) or radius (3D) of the zone and of its stick zone
-    std::vector<ZoneNode> nodes;
-    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, local))
-      nodes.insert(nodes.end(), part.begin(), part.end());
-    const ContactZoneShape shape =
-      contact_zone_shape(nodes,
-                         dim - 1,
-                         0.25 * contact_set.min_face_diameter());
-    record.half_width      = shape.width.nodes;
-    record.edge_half_width = shape.width.extrapolated;
-    record.area            = shape.area;
-    record.extent          = shape.extent;
-    record.mirrored        = shape.mirrored;
-    if (contact_set.friction)
-      record.stick_half_width = shape.stick_width;
+    measure_zone_shape(local, contact_set, mpi_communicator, record);
 
     // errors against what the scene knows
     if (const Function<dim> *exact = scene.exact_pressure())
@@ -161,15 +213,7 @@ namespace dualcontact
                              parameters.exact.contact_pressure + "'.",
                            exit_invalid_value);
       }
-    if (parameters.exact.contact_half_width > 0.)
-      record.half_width_error =
-        record.edge_half_width / parameters.exact.contact_half_width - 1.;
-    if (parameters.exact.stick_half_width > 0.)
-      record.stick_half_width_error =
-        record.stick_half_width / parameters.exact.stick_half_width - 1.;
-    if (parameters.exact.peak_pressure > 0.)
-      record.peak_pressure_error =
-        record.max_pressure / parameters.exact.peak_pressure - 1.;
+    relative_zone_errors(parameters.exact, record);
     return record;
   }
 

@@ -1,3 +1,7 @@
+// Report: what a run prints, from the scene and the legend through the
+// loops' lines to a cycle's results and the summary at the end. The column
+// layouts, the load path's lines and the CSV writers are in
+// source/report/columns.cc, load_path_lines.cc and csv_writers.cc.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
@@ -9,36 +13,12 @@
 #include <iomanip>
 #include <sstream>
 
+#include "report/columns.h"
 #include "report/format.h"
 #include "report/loop_figure.h"
 
 namespace dualcontact
 {
-  void
-  CsvTable::write_csv(std::ostream &out) const
-  {
-    const std::vector<std::string> &keys = column_order;
-    for (unsigned int c = 0; c < keys.size(); ++c)
-      out << (c > 0 ? "," : "") << keys[c];
-    out << '\n';
-    const std::size_t rows = n_rows();
-    for (std::size_t i = 0; i < rows; ++i)
-      {
-        for (unsigned int c = 0; c < keys.size(); ++c)
-          {
-            const auto &entries = columns.at(keys[c]).entries;
-            if (c > 0)
-              out << ',';
-            if (i < entries.size())
-              {
-                entries[i].cache_string(true, 10); // small residuals too
-                out << entries[i].get_cached_string();
-              }
-          }
-        out << '\n';
-      }
-  }
-
   std::string
   to_string(const Loop loop)
   {
@@ -86,91 +66,6 @@ namespace dualcontact
   namespace
   {
     using namespace report_format;
-
-    /** The loops a scene runs: what its columns and its legend show. */
-    struct Loops
-    {
-      bool contact  = false;
-      bool friction = false; // l2 and stick/slip
-      bool coulomb  = false; // g = F l1: the threshold iteration
-      bool nested   = false; // its steps around Uzawa solves
-      bool merged   = false; // g updated in each Uzawa step
-    };
-
-    template <int dim>
-    Loops
-    loops_of(const Parameters &parameters, const Scene<dim> &scene)
-    {
-      const Effects &effects = scene.effects();
-      Loops          loops;
-      loops.contact  = effects.contact;
-      loops.friction = effects.contact && effects.friction_law().has_friction();
-      loops.coulomb =
-        loops.friction && effects.friction_law().depends_on_pressure();
-      loops.nested = loops.coulomb &&
-                     parameters.friction.strategy == FrictionStrategy::nested;
-      loops.merged = loops.coulomb && !loops.nested;
-      return loops;
-    }
-
-    /** A Uzawa step, and whether it had friction and updated g. */
-    struct UzawaRow
-    {
-      IterationRecord record;
-      bool            friction;
-      bool            merged;
-    };
-
-    /**
-     * The columns of the Uzawa rows of a scene: what the step did, the node
-     * counts, the relative changes and the two contact conditions (what the
-     * stopping test looks at), and its wall time. A step without friction
-     * (the frictionless start of the threshold iteration) or without an
-     * update of g has '-' in those columns.
-     */
-    std::vector<Column<UzawaRow>>
-    uzawa_columns(const Loops &loops, const bool timing)
-    {
-      using R            = UzawaRow;
-      const auto count   = [](const auto n) { return std::to_string(n); };
-      const auto or_dash = [](const bool applies, const std::string &x) {
-        return applies ? x : std::string("-");
-      };
-      std::vector<Column<R>> c = {
-        {"Newton", 8, [=](const R &r) { return count(r.record.newton_steps); }},
-        {"CG", 6, [=](const R &r) { return count(r.record.cg_iterations); }},
-        {"active", 8, [=](const R &r) { return count(r.record.n_active); }}};
-      if (loops.friction)
-        c.push_back({"stick/slip", 12, [=](const R &r) {
-                       return or_dash(r.friction,
-                                      count(r.record.n_stick) + "/" +
-                                        count(r.record.n_slip));
-                     }});
-      c.push_back({"d(l1)", 10, [](const R &r) {
-                     return scientific(r.record.change_l1);
-                   }});
-      if (loops.friction)
-        c.push_back({"d(l2)", 10, [=](const R &r) {
-                       return or_dash(r.friction,
-                                      scientific(r.record.change_l2));
-                     }});
-      c.push_back(
-        {"d(v)", 10, [](const R &r) { return scientific(r.record.change_v); }});
-      if (loops.merged)
-        c.push_back({"d(g)", 10, [=](const R &r) {
-                       return or_dash(r.merged, scientific(r.record.change_g));
-                     }});
-      c.push_back({"viol.", 10, [](const R &r) {
-                     return scientific(r.record.violation);
-                   }});
-      c.push_back({"compl.", 10, [](const R &r) {
-                     return scientific(r.record.complementarity);
-                   }});
-      if (timing)
-        c.push_back(
-          {"time [s]", 10, [](const R &r) { return fixed(r.record.time, 3); }});
-      return c;
-    }
 
     const std::string uzawa_label = "   Uzawa";
 
@@ -396,18 +291,6 @@ namespace dualcontact
     pcout << wrap(label.str(), items, ", ", "          ") << std::flush;
   }
 
-  namespace
-  {
-    /** The same columns for every Uzawa solve of a scene. */
-    template <int dim>
-    std::vector<Column<UzawaRow>>
-    uzawa_columns_of(const Parameters &parameters, const Scene<dim> &scene)
-    {
-      return uzawa_columns(loops_of(parameters, scene),
-                           parameters.output.print_timing);
-    }
-  } // namespace
-
   template <int dim>
   void
   Report<dim>::print_uzawa_header(const unsigned int uzawa_step)
@@ -482,42 +365,6 @@ namespace dualcontact
     pcout << wrap_words("Warning: ", text, "         ") << std::flush;
   }
 
-
-  namespace
-  {
-    /**
-     * The quantities' columns of the row a quiet run prints per cycle, in
-     * the order of their places, without those of the largest priority
-     * while the row is wider than a screen line (the summary table has
-     * them all).
-     */
-    template <int dim>
-    std::vector<Column<CycleResult>>
-    row_columns(
-      const std::vector<std::unique_ptr<ReportQuantity<dim>>> &quantities)
-    {
-      std::vector<RowColumn> all;
-      for (const auto &quantity : quantities)
-        quantity->row_columns(all);
-      std::stable_sort(all.begin(),
-                       all.end(),
-                       [](const RowColumn &a, const RowColumn &b) {
-                         return a.place < b.place;
-                       });
-      std::vector<Column<CycleResult>> kept;
-      for (int lowest = 3; lowest >= 0; --lowest)
-        {
-          kept.clear();
-          for (const RowColumn &c : all)
-            if (static_cast<int>(c.priority) <= lowest)
-              kept.push_back({c.title, c.width, c.entry});
-          if (table_width("", kept) <= line_width)
-            break;
-        }
-      return kept;
-    }
-  } // namespace
-
   template <int dim>
   void
   Report<dim>::print_cycle_row(const CycleResult &r) const
@@ -552,69 +399,6 @@ namespace dualcontact
     csv.write_to(cycle_table);
     summary.write_to(screen_table);
     summary_has_errors = summary.has_errors();
-  }
-
-
-
-  template <int dim>
-  void
-  Report<dim>::write_cycles_csv() const
-  {
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
-    std::ofstream csv(parameters.output.directory + "/cycles.csv");
-    cycle_table.write_csv(csv);
-  }
-
-  template <int dim>
-  void
-  Report<dim>::append_iterations_csv()
-  {
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0 ||
-        !scene.effects().contact)
-      {
-        iterations_written = iteration_log.size(); // by rank 0
-        return;
-      }
-    if (!iterations_file_started)
-      iterations_file.open(parameters.output.directory + "/iterations.csv");
-    iterations_file_started = true;
-    const bool path         = parameters.load_path.n_steps_on_path() > 1;
-    std::vector<AppendedCsvFile::Row> rows;
-    for (; iterations_written < iteration_log.size(); ++iterations_written)
-      {
-        const IterationRecord &r    = iteration_log[iterations_written];
-        const auto             text = [](const auto value) {
-          std::ostringstream out;
-          out << std::scientific << std::setprecision(10) << value;
-          return out.str();
-        };
-        AppendedCsvFile::Row row = {{"cycle", text(r.cycle)}};
-        if (path)
-          row.emplace_back("step", text(r.step));
-        row.insert(row.end(),
-                   {{"loop", to_string(r.loop)},
-                    {"uzawa_step", text(r.uzawa_step)},
-                    {"index", text(r.index)},
-                    {"uzawa_steps", text(r.uzawa_steps)},
-                    {"newton_steps", text(r.newton_steps)},
-                    {"cg_iterations", text(r.cg_iterations)},
-                    {"amg_setups", text(r.amg_setups)},
-                    {"n_active", text(r.n_active)},
-                    {"n_stick", text(r.n_stick)},
-                    {"n_slip", text(r.n_slip)},
-                    {"gradient", text(r.gradient)},
-                    {"step_length", text(r.step_length)},
-                    {"change_l1", text(r.change_l1)},
-                    {"change_l2", text(r.change_l2)},
-                    {"change_g", text(r.change_g)},
-                    {"change_v", text(r.change_v)},
-                    {"violation", text(r.violation)},
-                    {"complementarity", text(r.complementarity)},
-                    {"time", text(r.time)}});
-        rows.push_back(std::move(row));
-      }
-    iterations_file.add_rows(rows);
   }
 
   template <int dim>
@@ -662,157 +446,6 @@ namespace dualcontact
     write_cycles_csv();
     append_iterations_csv();
     return cycle_results.back();
-  }
-
-  template <int dim>
-  void
-  Report<dim>::start_step(const StepRecord &step)
-  {
-    // memory flat along a long path: of the later steps' iterations, only
-    // the last step's stay in memory (iterations.csv has all of them)
-    const auto first_later =
-      std::find_if(iteration_log.begin(),
-                   iteration_log.end(),
-                   [](const IterationRecord &r) { return r.step > 1; });
-    const auto written = iteration_log.begin() + iterations_written;
-    if (first_later < written)
-      {
-        iterations_written -= written - first_later;
-        iteration_log.erase(first_later, written);
-      }
-    uzawa_header_shown = false;
-    if (!shows(Verbosity::normal))
-      return;
-    if (parameters.load_path.adaptive_steps)
-      pcout << "Load step " << step.step << ", t = " << step.time << " (size "
-            << step.step_size << ")\n";
-    else
-      pcout << "Load step " << step.step << " of "
-            << parameters.load_path.n_steps_on_path() << ", t = " << step.time
-            << '\n';
-  }
-
-  template <int dim>
-  void
-  Report<dim>::cut_step(const StepRecord  &failed,
-                        const std::string &why,
-                        const double       retry_time)
-  {
-    // the failed try's iterations: the last ones, not yet written
-    iteration_log.resize(iterations_written);
-    const std::string  reason = Utilities::trim(why.substr(0, why.find('\n')));
-    std::ostringstream label;
-    label << "step " << std::setw(4) << failed.step << ": ";
-    pcout
-      << wrap(label.str(),
-              {"t = " + significant(failed.time, 6) + " failed (" + reason +
-                 ")",
-               "cut: again at t = " + significant(retry_time, 6) + " (size " +
-                 significant(retry_time - (failed.time - failed.step_size), 6) +
-                 ")"},
-              ", ",
-              "            ")
-      << std::flush;
-  }
-
-  template <int dim>
-  const CycleResult &
-  Report<dim>::end_step(const CycleResult &measured)
-  {
-    CycleResult result = measured;
-    if (result.step.step > 1)
-      complete_times(result);
-    else
-      pcout << "Load path: " << result.step.n_steps
-            << " steps to t = " << parameters.load_path.step_times().back()
-            << "; "
-            << (loops_of(parameters, scene).friction ?
-                  "friction acts on the slip of each step, so each starts "
-                  "from the state the one before reached (history)" :
-                  "without friction each step is the static problem at its "
-                  "loads (no history), started from the step before")
-            << '\n';
-    step_results.push_back(result);
-
-    // the step's line, at every verbosity
-    const CycleResult       &r     = result;
-    std::vector<std::string> items = {"t = " + significant(r.step.time, 6)};
-    // a mesh adapted for the step
-    if (parameters.load_path.adapt_at_every_step && r.step.step > 1)
-      items.push_back(std::to_string(r.mesh.n_dofs) + " DoFs");
-    items.insert(items.end(),
-                 {"Uzawa " + std::to_string(r.solve.uzawa_steps) +
-                    (r.solve.predictor > 0. ? " (extrapolated)" : ""),
-                  "Newton " + std::to_string(r.solve.newton_steps),
-                  "CG " + std::to_string(r.solve.cg_iterations)});
-    if (scene.effects().contact)
-      items.push_back("contact force " + significant(r.zone.contact_force, 6));
-    if (loops_of(parameters, scene).friction)
-      {
-        items.push_back("tangential " +
-                        significant(r.zone.tangential_force, 6));
-        items.push_back("stick/slip " + std::to_string(r.solve.n_stick) + "/" +
-                        std::to_string(r.solve.n_slip));
-        items.push_back("dissipated " + scientific(r.step.dissipation) +
-                        " (total " + scientific(r.step.dissipation_total) +
-                        ")");
-      }
-    items.back() += seconds(r.time.cycle);
-    std::ostringstream label;
-    label << "step " << std::setw(4) << r.step.step << ": ";
-    pcout << wrap(label.str(), items, ", ", "            ") << std::flush;
-
-    // the step's row of steps.csv and its iterations appended, the loop's
-    // script updated: a step costs the same however many came before
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        TableEntries csv;
-        for (const auto &quantity : quantities)
-          quantity->csv_entries(result, csv);
-        if (result.step.step == 1)
-          steps_file.open(parameters.output.directory + "/steps.csv");
-        steps_file.add_rows({csv.csv_row()});
-        if (scene.effects().contact)
-          {
-            loop_figure->add(result);
-            loop_figure->write(parameters.output.directory,
-                               scene.obstacle_moves());
-          }
-      }
-    append_iterations_csv();
-    return step_results.back();
-  }
-
-  template <int dim>
-  void
-  Report<dim>::resume(const unsigned int last_step,
-                      const double       time,
-                      const double       total_time)
-  {
-    steps_before  = last_step;
-    cycles_before = parameters.refinement.n_cycles;
-    total_before  = total_time;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        const std::string &directory = parameters.output.directory;
-        steps_file.resume(directory + "/steps.csv", last_step);
-        if (scene.effects().contact)
-          iterations_file.resume(directory + "/iterations.csv", last_step);
-      }
-    iterations_file_started = true;
-    // the first step's times from here: not the time the loading took
-    previous_totals = timer.get_summary_data(TimerOutput::total_wall_time);
-    resumed_time    = time;
-  }
-
-  template <int dim>
-  void
-  Report<dim>::print_resume() const
-  {
-    pcout << "Resumed from the checkpoint at load step " << steps_before
-          << ", t = " << resumed_time
-          << " (the files of the steps up to it are kept, later ones written "
-             "again)\n";
   }
 
   template <int dim>

@@ -394,6 +394,13 @@ namespace dualcontact
      * or a mesh without the cells and DoFs of the record's 'mesh', are a
      * damaged checkpoint (InputError).
      */
+    /**
+     * The scalars of the path and of the report at the later step `step`,
+     * as write_checkpoint() keeps them in state.txt.
+     */
+    CheckpointRecord
+    checkpoint_record(const StepRecord &step, const StepControl &control) const;
+
     void
     load_mesh_and_fields(const std::string      &folder,
                          const CheckpointRecord &record);

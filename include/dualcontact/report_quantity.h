@@ -7,33 +7,28 @@
 // results. doc/output.md, "Columns of cycles.csv", says which quantity
 // writes which columns.
 //
-// Adding a quantity is one class and its registration line, in any file of
-// the library (source/report/*.cc) or of a program of one's own:
+// Adding a quantity is one registration, in any file of the library
+// (source/report/*.cc) or of a program of one's own: its name, and a
+// function that fills in its parts, each a formula from a cycle's result
+// to its columns or lines:
 //
 //   /** Every scene: my_column. */
-//   template <int dim>
-//   class MyQuantity : public ReportQuantity<dim>
-//   {
-//   public:
-//     using ReportQuantity<dim>::ReportQuantity;
-//     void
-//     csv_entries(const CycleResult &r, TableEntries &csv) const override
-//     {
-//       csv.add(610, "my_column", r.memory_mb);
-//     }
-//   };
-//
 //   const bool my_quantity_registered =
-//     register_report_quantity<MyQuantity>("my quantity");
+//     register_report_quantity("my quantity", [](auto &q) {
+//       q.csv = [](const auto &, const CycleResult &r, TableEntries &t) {
+//         t.add(610, "my_column", r.memory_mb);
+//       };
+//     });
 //
-// The class defines only the functions it needs (`has` too, where not
-// every scene has the quantity). The report asks the quantities in the
-// alphabetical order of their names, and nothing it writes depends on that
-// order: the columns of cycles.csv and of the summary table, the columns of
-// a quiet run's row and the lines of a cycle's results follow their places,
-// and no two quantities of a scene share a place (entries of one place keep
-// the order they were added in, which between two quantities would be the
-// order of their names).
+// The quantity fills in only the parts it needs (`has` too, where not
+// every scene has the quantity); a class derived from ReportQuantity and
+// registered with register_report_quantity<Class>(name) does the same. The
+// report asks the quantities in the alphabetical order of their names, and
+// nothing it writes depends on that order: the columns of cycles.csv and of the
+// summary table, the columns of a quiet run's row and the lines of a cycle's
+// results follow their places, and no two quantities of a scene share a place
+// (entries of one place keep the order they were added in, which between two
+// quantities would be the order of their names).
 #ifndef dualcontact_report_quantity_h
 #define dualcontact_report_quantity_h
 
@@ -48,6 +43,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -185,6 +181,96 @@ namespace dualcontact
   };
 
   /**
+   * A quantity as its parts: which scenes have it (`has`), and the
+   * formulas that add its columns and lines, each given the quantity first
+   * (its `parameters` and `scene`). A part left empty adds nothing.
+   */
+  template <int dim>
+  class QuantityFromParts;
+
+  template <int dim>
+  struct QuantityParts
+  {
+    static constexpr int dimension = dim;
+    using Quantity                 = QuantityFromParts<dim>;
+
+    std::function<bool(const Parameters &, const Scene<dim> &)> has =
+      &ReportQuantity<dim>::has;
+    /** ReportQuantity::csv_entries() */
+    std::function<void(const Quantity &, const CycleResult &, TableEntries &)>
+      csv;
+    /** ReportQuantity::summary_entries() */
+    std::function<void(const Quantity &, const CycleResult &, TableEntries &)>
+      summary;
+    /** ReportQuantity::format_summary() */
+    std::function<void(const Quantity &, ConvergenceTable &)> format_summary;
+    /** ReportQuantity::row_columns() */
+    std::function<void(const Quantity &, std::vector<RowColumn> &)> row;
+    /** ReportQuantity::print() */
+    std::function<void(const Quantity &, const CycleResult &, ScreenLines &)>
+      print;
+  };
+
+  /** The dimension of a QuantityParts<dim>, for the function that fills it. */
+  template <typename Parts>
+  constexpr int dimension_of = std::decay_t<Parts>::dimension;
+
+  /** The ReportQuantity that calls its parts. */
+  template <int dim>
+  class QuantityFromParts : public ReportQuantity<dim>
+  {
+  public:
+    QuantityFromParts(const Parameters         &parameters,
+                      const Scene<dim>         &scene,
+                      const QuantityParts<dim> &parts)
+        : ReportQuantity<dim>(parameters, scene)
+        , parts(parts)
+    {}
+
+    using ReportQuantity<dim>::parameters;
+    using ReportQuantity<dim>::scene;
+
+    void
+    csv_entries(const CycleResult &result, TableEntries &csv) const override
+    {
+      if (parts.csv)
+        parts.csv(*this, result, csv);
+    }
+
+    void
+    summary_entries(const CycleResult &result,
+                    TableEntries      &summary) const override
+    {
+      if (parts.summary)
+        parts.summary(*this, result, summary);
+    }
+
+    void
+    format_summary(ConvergenceTable &table) const override
+    {
+      if (parts.format_summary)
+        parts.format_summary(*this, table);
+    }
+
+    void
+    row_columns(std::vector<RowColumn> &columns) const override
+    {
+      if (parts.row)
+        parts.row(*this, columns);
+    }
+
+    void
+    print(const CycleResult &result, ScreenLines &lines) const override
+    {
+      if (parts.print)
+        parts.print(*this, result, lines);
+    }
+
+  private:
+    const QuantityParts<dim> parts;
+  };
+
+  /**
    * What the registry holds of a quantity for one dimension: whether a
    * scene has it, and how to make it.
    */
@@ -209,6 +295,20 @@ namespace dualcontact
             }};
   }
 
+  /** The factory of the quantity of `parts` in dimension dim. */
+  template <int dim>
+  ReportQuantityFactory<dim>
+  parts_factory(const QuantityParts<dim> &parts)
+  {
+    return {parts.has,
+            [parts](const Parameters &parameters, const Scene<dim> &scene)
+              -> std::unique_ptr<ReportQuantity<dim>> {
+              return std::make_unique<QuantityFromParts<dim>>(parameters,
+                                                              scene,
+                                                              parts);
+            }};
+  }
+
   /** Adds `factory` to the registry of dimension dim, as `name`. */
   template <int dim>
   void
@@ -227,6 +327,25 @@ namespace dualcontact
   {
     add_report_quantity<2>(name, report_quantity_factory<Quantity, 2>());
     add_report_quantity<3>(name, report_quantity_factory<Quantity, 3>());
+    return true;
+  }
+
+  /**
+   * Makes the quantity whose parts `fill_parts(QuantityParts<dim> &)` fills
+   * in (a generic lambda: dimension_of<decltype(parts)> is its dim) known
+   * to the report as `name`, in 2D and 3D. Returns true (for the static
+   * initialiser).
+   */
+  template <typename FillParts>
+  bool
+  register_report_quantity(const std::string &name, const FillParts &fill_parts)
+  {
+    QuantityParts<2> parts_2d;
+    fill_parts(parts_2d);
+    QuantityParts<3> parts_3d;
+    fill_parts(parts_3d);
+    add_report_quantity<2>(name, parts_factory(parts_2d));
+    add_report_quantity<3>(name, parts_factory(parts_3d));
     return true;
   }
 

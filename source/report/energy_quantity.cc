@@ -10,20 +10,11 @@ namespace dualcontact
   namespace
   {
     /** Every scene: potential_energy. */
-    template <int dim>
-    class PotentialEnergy : public ReportQuantity<dim>
-    {
-    public:
-      using ReportQuantity<dim>::ReportQuantity;
-
-      void
-      csv_entries(const CycleResult &r, TableEntries &t) const override
-      {
-        t.add(375, "potential_energy", r.potential_energy);
-      }
-    };
-
     const bool potential_energy_registered =
-      register_report_quantity<PotentialEnergy>("potential energy");
+      register_report_quantity("potential energy", [](auto &parts) {
+        parts.csv = [](const auto &, const CycleResult &r, TableEntries &t) {
+          t.add(375, "potential_energy", r.potential_energy);
+        };
+      });
   } // namespace
 } // namespace dualcontact
