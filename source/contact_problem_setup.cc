@@ -101,8 +101,11 @@ namespace dualcontact
     // a pair of bodies their master nodes (doc/two_bodies.md)
     if (scene.effects().contact)
       {
-        contact_set.setup(
-          mapping, dof_handler, hanging_node_constraints, constraints, scene);
+        contact_set.setup(mapping,
+                          dof_handler,
+                          hanging_node_constraints,
+                          constraints,
+                          contact_setup(scene));
         AssertThrow(contact_set.n_global_nodes() > 0,
                     ExcMessage("The contact boundary has no contact nodes."));
         if (contact_set.has_pairs())

@@ -7,6 +7,7 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/discretization.h>
 #include <dualcontact/input_error.h>
+#include <dualcontact/scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,102 +18,55 @@
 namespace dualcontact
 {
   template <int dim>
+  ContactSetup<dim>
+  contact_setup(const Scene<dim> &scene)
+  {
+    ContactSetup<dim> input;
+    input.contact_ids           = scene.contact_ids();
+    input.pairs                 = scene.contact_pairs();
+    input.node_to_segment       = scene.pairs_node_to_segment();
+    input.obstacle              = &scene.obstacle();
+    input.friction_law          = &scene.effects().friction_law();
+    input.friction_parameter    = scene.friction_function();
+    input.characteristic_length = scene.characteristic_length();
+    input.center                = scene.center();
+    return input;
+  }
+
+  template <int dim>
   void
   ContactSet<dim>::setup(
     const Mapping<dim>              &mapping,
     const DoFHandler<dim>           &dof_handler,
     const AffineConstraints<double> &hanging_node_constraints,
     const AffineConstraints<double> &all_constraints,
-    const Scene<dim>                &scene)
+    const ContactSetup<dim>         &input)
   {
-    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    const FiniteElement<dim> &fe    = dof_handler.get_fe();
-    const IndexSet           &owned = dof_handler.locally_owned_dofs();
-    // the obstacle's ids and the slave ids of the contact pairs
-    const auto contact_ids = scene.contact_ids();
+    const MPI_Comm  comm  = dof_handler.get_triangulation().get_communicator();
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    // the slave ids of the contact pairs
     std::map<types::global_dof_index, types::boundary_id> slave_id_of;
 
-    obstacle = &scene.obstacle();
+    obstacle              = input.obstacle;
+    characteristic_length = input.characteristic_length;
+    center                = input.center;
+    pairs_.reinit(input.pairs, input.node_to_segment);
 
     // Weights m_s = int_{Gamma_C} phi_s, with the weight of hanging nodes
-    // handed to their masters. Every component carries the same weight.
-    // The body's outward normal at a node, the mean int_{Gamma_C} phi_s nu
-    // of the faces' normals, is assembled alike, component c of it on the
-    // node's DoF of component c.
+    // handed to their masters, and the body's outward normals at the nodes
+    // (find_candidates()).
     TrilinosWrappers::MPI::Vector weights(owned, comm);
     TrilinosWrappers::MPI::Vector body_normals(owned, comm);
-    const Quadrature<dim - 1> quadrature = face_quadrature(fe, fe.degree + 1);
-    FEFaceValues<dim>         fe_face(mapping,
-                              fe,
-                              quadrature,
-                              update_values | update_normal_vectors |
-                                update_JxW_values);
-    Vector<double>            local_weights(fe.n_dofs_per_cell());
-    Vector<double>            local_normals(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-
-    // Candidate nodes: cell-local support points on contact faces (as
-    // support_on_face() finds them: on a triangle not the vertex opposite
-    // the face), grouped by their scalar shape function (the "base"
-    // index), from the owned and the ghost cells: a node this rank owns
-    // may lie on contact faces of other ranks' cells only (a vertex of a
-    // triangle fan whose owned triangle touches Gamma_C at that vertex
-    // alone). Weights and normals come from the owned cells, summed over
-    // the ranks.
-    std::map<types::global_dof_index, ContactNode<dim>> candidates;
-    double h_min = std::numeric_limits<double>::max();
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() || cell->is_ghost())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              contact_ids.count(cell->face(f)->boundary_id()))
-            {
-              cell->get_dof_indices(dof_indices);
-              if (cell->is_locally_owned())
-                {
-                  h_min = std::min(h_min, cell->face(f)->diameter());
-                  fe_face.reinit(cell, f);
-                  local_weights = 0;
-                  local_normals = 0;
-                  for (const unsigned int q :
-                       fe_face.quadrature_point_indices())
-                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                      {
-                        const double phi_dx =
-                          fe_face.shape_value(i, q) * fe_face.JxW(q);
-                        local_weights(i) += phi_dx;
-                        local_normals(i) +=
-                          phi_dx * fe_face.normal_vector(
-                                     q)[fe.system_to_component_index(i).first];
-                      }
-                  hanging_node_constraints.distribute_local_to_global(
-                    local_weights, dof_indices, weights);
-                  hanging_node_constraints.distribute_local_to_global(
-                    local_normals, dof_indices, body_normals);
-                }
-
-              std::map<unsigned int, ContactNode<dim>> on_face;
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                if (support_on_face(fe, i, f))
-                  {
-                    const auto [component, base] =
-                      fe.system_to_component_index(i);
-                    ContactNode<dim> &node = on_face[base];
-                    node.dofs[component]   = dof_indices[i];
-                    if (component == 0)
-                      node.position = mapping.transform_unit_to_real_cell(
-                        cell, fe.unit_support_point(i));
-                  }
-              for (const auto &[base, node] : on_face)
-                {
-                  candidates.emplace(node.dofs[0], node);
-                  if (scene.contact_pairs().count(cell->face(f)->boundary_id()))
-                    slave_id_of[node.dofs[0]] = cell->face(f)->boundary_id();
-                }
-            }
-    weights.compress(VectorOperation::add);
-    body_normals.compress(VectorOperation::add);
+    double                        h_min = std::numeric_limits<double>::max();
+    std::map<types::global_dof_index, ContactNode<dim>> candidates =
+      find_candidates(mapping,
+                      dof_handler,
+                      hanging_node_constraints,
+                      input.contact_ids,
+                      weights,
+                      body_normals,
+                      slave_id_of,
+                      h_min);
 
     nodes.clear();
     types::global_dof_index hanging = 0;
@@ -137,21 +91,127 @@ namespace dualcontact
           node.body_normal /= node.body_normal.norm();
         nodes.push_back(node);
       }
-    couple_pairs(mapping,
-                 dof_handler,
-                 hanging_node_constraints,
-                 all_constraints,
-                 scene,
-                 slave_id_of);
-    place_obstacle(scene, comm);
+    pairs_.couple(mapping,
+                  dof_handler,
+                  hanging_node_constraints,
+                  all_constraints,
+                  slave_id_of,
+                  nodes);
+    place_obstacle(*input.obstacle, comm);
 
     l1.assign(nodes.size(), 0.);
     statuses.assign(nodes.size(), separated);
     slip_origin.assign(nodes.size(), Tensor<1, dim - 1>());
+    set_friction(input, comm);
 
+    n_global = Utilities::MPI::sum<types::global_dof_index>(nodes.size(), comm);
+    n_hanging            = Utilities::MPI::sum(hanging, comm);
+    h_min_               = Utilities::MPI::min(h_min, comm);
+    double local_measure = 0;
+    for (const auto &node : nodes)
+      local_measure += node.weight;
+    measure_ = Utilities::MPI::sum(local_measure, comm);
+  }
+
+  template <int dim>
+  std::map<types::global_dof_index, ContactNode<dim>>
+  ContactSet<dim>::find_candidates(
+    const Mapping<dim>                                    &mapping,
+    const DoFHandler<dim>                                 &dof_handler,
+    const AffineConstraints<double>                       &hanging,
+    const std::set<types::boundary_id>                    &contact_ids,
+    TrilinosWrappers::MPI::Vector                         &weights,
+    TrilinosWrappers::MPI::Vector                         &body_normals,
+    std::map<types::global_dof_index, types::boundary_id> &slave_id_of,
+    double                                                &h_min) const
+  {
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    // Every component carries the same weight. The body's outward normal
+    // at a node, the mean int_{Gamma_C} phi_s nu of the faces' normals, is
+    // assembled alike, component c of it on the node's DoF of component c.
+    const Quadrature<dim - 1> quadrature = face_quadrature(fe, fe.degree + 1);
+    FEFaceValues<dim>         fe_face(mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_normal_vectors |
+                                update_JxW_values);
+    Vector<double>            local_weights(fe.n_dofs_per_cell());
+    Vector<double>            local_normals(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+
+    // Candidate nodes: cell-local support points on contact faces (as
+    // support_on_face() finds them: on a triangle not the vertex opposite
+    // the face), grouped by their scalar shape function (the "base"
+    // index), from the owned and the ghost cells: a node this rank owns
+    // may lie on contact faces of other ranks' cells only (a vertex of a
+    // triangle fan whose owned triangle touches Gamma_C at that vertex
+    // alone). Weights and normals come from the owned cells, summed over
+    // the ranks.
+    std::map<types::global_dof_index, ContactNode<dim>> candidates;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()))
+            {
+              cell->get_dof_indices(dof_indices);
+              if (cell->is_locally_owned())
+                {
+                  h_min = std::min(h_min, cell->face(f)->diameter());
+                  fe_face.reinit(cell, f);
+                  local_weights = 0;
+                  local_normals = 0;
+                  for (const unsigned int q :
+                       fe_face.quadrature_point_indices())
+                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                      {
+                        const double phi_dx =
+                          fe_face.shape_value(i, q) * fe_face.JxW(q);
+                        local_weights(i) += phi_dx;
+                        local_normals(i) +=
+                          phi_dx * fe_face.normal_vector(
+                                     q)[fe.system_to_component_index(i).first];
+                      }
+                  hanging.distribute_local_to_global(local_weights,
+                                                     dof_indices,
+                                                     weights);
+                  hanging.distribute_local_to_global(local_normals,
+                                                     dof_indices,
+                                                     body_normals);
+                }
+
+              std::map<unsigned int, ContactNode<dim>> on_face;
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                if (support_on_face(fe, i, f))
+                  {
+                    const auto [component, base] =
+                      fe.system_to_component_index(i);
+                    ContactNode<dim> &node = on_face[base];
+                    node.dofs[component]   = dof_indices[i];
+                    if (component == 0)
+                      node.position = mapping.transform_unit_to_real_cell(
+                        cell, fe.unit_support_point(i));
+                  }
+              for (const auto &[base, node] : on_face)
+                {
+                  candidates.emplace(node.dofs[0], node);
+                  if (pairs_.is_slave(cell->face(f)->boundary_id()))
+                    slave_id_of[node.dofs[0]] = cell->face(f)->boundary_id();
+                }
+            }
+    weights.compress(VectorOperation::add);
+    body_normals.compress(VectorOperation::add);
+    return candidates;
+  }
+
+  template <int dim>
+  void
+  ContactSet<dim>::set_friction(const ContactSetup<dim> &input,
+                                const MPI_Comm           comm)
+  {
     // Friction data at the nodes: the law's parameter (F or g), never
     // negative, and the threshold it gives at zero pressure.
-    law      = &scene.effects().friction_law();
+    law      = input.friction_law;
     friction = law->has_friction();
     l2.assign(nodes.size(), Tensor<1, dim - 1>());
     threshold.assign(nodes.size(), 0.);
@@ -163,7 +223,7 @@ namespace dualcontact
         for (unsigned int s = 0; s < nodes.size(); ++s)
           {
             const double value =
-              scene.friction_function()->value(nodes[s].position);
+              input.friction_parameter->value(nodes[s].position);
             not_finite += !std::isfinite(value);
             smallest              = std::min(smallest, value);
             friction_parameter[s] = value;
@@ -182,27 +242,21 @@ namespace dualcontact
                              "> is negative at some contact node.",
                            exit_invalid_value);
       }
-    n_global = Utilities::MPI::sum<types::global_dof_index>(nodes.size(), comm);
-    n_hanging            = Utilities::MPI::sum(hanging, comm);
-    h_min_               = Utilities::MPI::min(h_min, comm);
-    double local_measure = 0;
-    for (const auto &node : nodes)
-      local_measure += node.weight;
-    measure_ = Utilities::MPI::sum(local_measure, comm);
   }
 
   template <int dim>
   void
-  ContactSet<dim>::place_obstacle(const Scene<dim> &scene, const MPI_Comm comm)
+  ContactSet<dim>::place_obstacle(const PlacedObstacle<dim> &obstacle,
+                                  const MPI_Comm             comm)
   {
-    obstacle               = &scene.obstacle();
+    this->obstacle         = &obstacle;
     unsigned int no_normal = 0, corners = 0;
     for (auto &node : nodes)
       {
         // a paired node's gap and normal are the pair's (couple_pairs())
         if (!node.masters.empty())
           continue;
-        node.gap0                            = scene.initial_gap(node.position);
+        node.gap0                            = obstacle.distance(node.position);
         std::tie(node.normal, node.tangents) = basis_at(node.position);
         // Where the obstacle's nearest point is a corner or an edge, its
         // normal (from the corner toward the node) is no normal of its
@@ -212,7 +266,7 @@ namespace dualcontact
         // surface beside the punch free, as this does; the direction from
         // the corner would turn the punch's side into a wall that the
         // surface beside it meets.
-        if (obstacle->has_corner_near(node.position) &&
+        if (obstacle.has_corner_near(node.position) &&
             node.body_normal.norm() > 0.5)
           {
             node.normal   = node.body_normal;
@@ -229,7 +283,7 @@ namespace dualcontact
           std::to_string(Utilities::MPI::sum(no_normal, comm)) +
           " contact node(s): the gradient of its distance is zero or not "
           "finite there (" +
-          scene.obstacle().entries() + ").",
+          obstacle.entries() + ").",
         exit_invalid_value);
 
     // the direction of first contact: the mean normal of the nodes closest
@@ -252,7 +306,7 @@ namespace dualcontact
       if (counts(node))
         closest = std::min(closest, node.gap0);
     closest                  = Utilities::MPI::min(closest, comm);
-    const double   tolerance = 1e-8 * scene.characteristic_length();
+    const double   tolerance = 1e-8 * characteristic_length;
     Tensor<1, dim> mean;
     for (const auto &node : nodes)
       if (counts(node) && node.gap0 <= closest + tolerance)
@@ -262,9 +316,16 @@ namespace dualcontact
     if (mean.norm() > 0)
       normal = mean / mean.norm();
     else // no contact node at all, or normals that cancel: the obstacle's
-      normal = -scene.obstacle().normal(scene.center());
+      normal = -obstacle.normal(center);
     tangents = tangent_basis(normal);
     tangent  = tangents[0];
+  }
+
+  template <int dim>
+  void
+  ContactSet<dim>::place_obstacle(const Scene<dim> &scene, const MPI_Comm comm)
+  {
+    place_obstacle(scene.obstacle(), comm);
   }
 
   template <int dim>
@@ -428,93 +489,10 @@ namespace dualcontact
     return dofs;
   }
 
-  template <int dim>
-  std::vector<Tensor<1, dim>>
-  held_directions(const ContactNode<dim>          &node,
-                  const AffineConstraints<double> &constraints)
-  {
-    std::vector<Tensor<1, dim>> held;
-    for (unsigned int c = 0; c < dim; ++c)
-      {
-        if (!constraints.is_constrained(node.dofs[c]))
-          continue;
-        // v_c = sum_j a_j v_j + b, the v_j the node's own: (e_c - sum_j a_j
-        // e_j) . v = b
-        Tensor<1, dim> h;
-        h[c]            = 1.;
-        bool       own  = true;
-        const auto line = constraints.get_constraint_entries(node.dofs[c]);
-        if (line != nullptr)
-          for (const auto &[dof, a] : *line)
-            {
-              const auto it =
-                std::find(node.dofs.begin(), node.dofs.end(), dof);
-              own &= it != node.dofs.end();
-              if (it != node.dofs.end())
-                h[it - node.dofs.begin()] -= a;
-            }
-        if (!own)
-          continue;
-        for (const Tensor<1, dim> &g : held)
-          h -= (h * g) * g;
-        if (h.norm() > 1e-8)
-          held.push_back(h / h.norm());
-      }
-    return held;
-  }
-
-  template <int dim>
-  std::array<Tensor<1, dim>, dim - 1>
-  free_tangents(const Tensor<1, dim>              &n,
-                const std::vector<Tensor<1, dim>> &held)
-  {
-    std::array<Tensor<1, dim>, dim - 1> t = tangent_basis(n);
-    if (held.empty())
-      return t;
-    // G_kl = t_k . P t_l, P the projection onto the held directions: an
-    // eigenvalue 1 is a tangent they contain
-    const double tolerance = 1e-8;
-    const auto   G         = [&](const unsigned int k, const unsigned int l) {
-      double sum = 0.;
-      for (const Tensor<1, dim> &h : held)
-        sum += (t[k] * h) * (t[l] * h);
-      return sum;
-    };
-    if constexpr (dim == 2)
-      {
-        if (G(0, 0) > 1. - tolerance)
-          t[0] = Tensor<1, dim>();
-      }
-    else
-      {
-        const double a = G(0, 0), b = G(0, 1), c = G(1, 1);
-        const double mean = (a + c) / 2, radius = std::hypot((a - c) / 2, b);
-        if (mean - radius > 1. - tolerance) // both held
-          return {};
-        if (mean + radius > 1. - tolerance) // one: keep the other
-          {
-            // the eigenvector of the larger eigenvalue, a tangent held
-            const double         lambda = mean + radius;
-            const Tensor<1, dim> w =
-              std::abs(a - lambda) > std::abs(c - lambda) ?
-                b * t[0] + (lambda - a) * t[1] :
-                (lambda - c) * t[0] + b * t[1];
-            const Tensor<1, dim> along = w.norm() > 0. ? w / w.norm() : t[0];
-            t[0]                       = cross_product_3d(n / n.norm(), along);
-            t[1]                       = Tensor<1, dim>();
-          }
-      }
-    return t;
-  }
-
-  template std::vector<Tensor<1, 2>>
-  held_directions(const ContactNode<2> &, const AffineConstraints<double> &);
-  template std::vector<Tensor<1, 3>>
-  held_directions(const ContactNode<3> &, const AffineConstraints<double> &);
-  template std::array<Tensor<1, 2>, 1>
-  free_tangents(const Tensor<1, 2> &, const std::vector<Tensor<1, 2>> &);
-  template std::array<Tensor<1, 3>, 2>
-  free_tangents(const Tensor<1, 3> &, const std::vector<Tensor<1, 3>> &);
+  template ContactSetup<2>
+  contact_setup(const Scene<2> &);
+  template ContactSetup<3>
+  contact_setup(const Scene<3> &);
 
   template class ContactSet<2>;
   template class ContactSet<3>;

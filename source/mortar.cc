@@ -79,6 +79,116 @@ namespace dualcontact
               phi[a] *= (x - xi[b]) / (xi[a] - xi[b]);
         return phi;
       }
+
+      /**
+       * The dual coefficients A = D M^-1 of a slave segment with the nodes
+       * at `xi_s` (D = diag(int phi_t), M the mass matrix, on [0, 1]:
+       * scale-free, both grow with the length), and int phi_t on [0, 1].
+       */
+      FullMatrix<double>
+      segment_dual_coefficients(const std::vector<double> &xi_s,
+                                std::vector<double>       &integral)
+      {
+        const unsigned int n = xi_s.size();
+        const unsigned int k = n - 1; // the degree
+        // Gauss points on [0, 1] exact for degree 2k
+        const QGauss<1>    gauss(k + 1);
+        FullMatrix<double> mass(n, n), inverse(n, n), dual(n, n);
+        integral.assign(n, 0.);
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          {
+            const auto phi = lagrange(xi_s, gauss.point(q)[0]);
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                integral[a] += gauss.weight(q) * phi[a];
+                for (unsigned int b = 0; b < n; ++b)
+                  mass(a, b) += gauss.weight(q) * phi[a] * phi[b];
+              }
+          }
+        inverse.invert(mass);
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < n; ++b)
+            dual(a, b) = integral[a] * inverse(a, b);
+        return dual;
+      }
+
+      /**
+       * The entries M_sj of the slave segment s (its nodes at xi_s,
+       * numbered n_s, its dual coefficients `dual`) against the master
+       * segment m, added to `entries`: none unless they face each other
+       * and overlap along the slave's chord.
+       */
+      void
+      couple_segments(const Segment                               &s,
+                      const Segment                               &m,
+                      const std::vector<double>                   &xi_s,
+                      const std::vector<unsigned int>             &n_s,
+                      const FullMatrix<double>                    &dual,
+                      std::vector<std::map<unsigned int, double>> &entries)
+      {
+        const Tensor<1, 2> along  = s.x[1] - s.x[0];
+        const double       length = along.norm();
+        const unsigned int n      = xi_s.size();
+        const unsigned int k      = n - 1;
+        // the slave coordinate of a point projected along the normal
+        const auto coordinate = [&](const Point<2> &p) {
+          return (p - s.x[0]) * along / (length * length);
+        };
+        if (s.normal.norm() > 0. && m.normal.norm() > 0. &&
+            s.normal * m.normal >= -0.5)
+          return;
+        const double xi0 = coordinate(m.x[0]);
+        const double xi1 = coordinate(m.x[1]);
+        // a master segment at a right angle to the slave projects
+        // onto a point: no overlap of positive length
+        if (std::abs(xi1 - xi0) <= 1e-14)
+          return;
+        const double lo = std::max(0., std::min(xi0, xi1));
+        const double hi = std::min(1., std::max(xi0, xi1));
+        if (hi <= lo)
+          return;
+        // the two segments face each other where they overlap: at
+        // both ends of the overlap (the distance between the chords
+        // is affine in between), each lies in front of the other
+        // up to the longer one's length (facing_tolerance())
+        const double tolerance =
+          facing_tolerance(length, (m.x[1] - m.x[0]).norm());
+        const auto on_master = [&](const double xi) {
+          return m.x[0] + (xi - xi0) / (xi1 - xi0) * (m.x[1] - m.x[0]);
+        };
+        if (!in_front(s.normal,
+                      m.normal,
+                      s.x[0] + lo * along,
+                      on_master(lo),
+                      tolerance) ||
+            !in_front(s.normal,
+                      m.normal,
+                      s.x[0] + hi * along,
+                      on_master(hi),
+                      tolerance))
+          return;
+        const std::vector<double>       xi_m = node_coordinates(m);
+        const std::vector<unsigned int> n_m  = node_numbers(m);
+        // psi_a phi_b has degree k + k_master: Gauss points enough
+        const QGauss<1> overlap((k + xi_m.size()) / 2 + 1);
+        for (unsigned int q = 0; q < overlap.size(); ++q)
+          {
+            const double xi    = lo + (hi - lo) * overlap.point(q)[0];
+            const double w     = (hi - lo) * length * overlap.weight(q);
+            const auto   phi_s = lagrange(xi_s, xi);
+            // the master's functions at the same point: in its own
+            // coordinate eta, which is affine in xi
+            const auto phi_m = lagrange(xi_m, (xi - xi0) / (xi1 - xi0));
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                double psi = 0.;
+                for (unsigned int b = 0; b < n; ++b)
+                  psi += dual(a, b) * phi_s[b];
+                for (unsigned int b = 0; b < phi_m.size(); ++b)
+                  entries[n_s[a]][n_m[b]] += w * psi * phi_m[b];
+              }
+          }
+      }
     } // namespace
 
     Coupling
@@ -92,98 +202,18 @@ namespace dualcontact
 
       for (const Segment &s : slave)
         {
-          const Tensor<1, 2> along  = s.x[1] - s.x[0];
-          const double       length = along.norm();
+          const double length = (s.x[1] - s.x[0]).norm();
           if (length == 0.)
             continue;
           const std::vector<double>       xi_s = node_coordinates(s);
           const std::vector<unsigned int> n_s  = node_numbers(s);
-          const unsigned int              n    = xi_s.size();
-          const unsigned int              k    = n - 1; // the degree
-          // Gauss points on [0, 1] exact for degree 2k
-          const QGauss<1> gauss(k + 1);
-          // D = diag(int phi_t) and the mass matrix M on [0, 1]; the dual
-          // coefficients A = D M^-1 (scale-free: both grow with the length)
-          FullMatrix<double>  mass(n, n), inverse(n, n), dual(n, n);
-          std::vector<double> integral(n, 0.);
-          for (unsigned int q = 0; q < gauss.size(); ++q)
-            {
-              const auto phi = lagrange(xi_s, gauss.point(q)[0]);
-              for (unsigned int a = 0; a < n; ++a)
-                {
-                  integral[a] += gauss.weight(q) * phi[a];
-                  for (unsigned int b = 0; b < n; ++b)
-                    mass(a, b) += gauss.weight(q) * phi[a] * phi[b];
-                }
-            }
-          inverse.invert(mass);
-          for (unsigned int a = 0; a < n; ++a)
-            {
-              coupling.weight[n_s[a]] += integral[a] * length;
-              for (unsigned int b = 0; b < n; ++b)
-                dual(a, b) = integral[a] * inverse(a, b);
-            }
-          // the slave coordinate of a point projected along the normal
-          const auto coordinate = [&](const Point<2> &p) {
-            return (p - s.x[0]) * along / (length * length);
-          };
+          std::vector<double>             integral;
+          const FullMatrix<double>        dual =
+            segment_dual_coefficients(xi_s, integral);
+          for (unsigned int a = 0; a < xi_s.size(); ++a)
+            coupling.weight[n_s[a]] += integral[a] * length;
           for (const Segment &m : master)
-            {
-              if (s.normal.norm() > 0. && m.normal.norm() > 0. &&
-                  s.normal * m.normal >= -0.5)
-                continue;
-              const double xi0 = coordinate(m.x[0]);
-              const double xi1 = coordinate(m.x[1]);
-              // a master segment at a right angle to the slave projects
-              // onto a point: no overlap of positive length
-              if (std::abs(xi1 - xi0) <= 1e-14)
-                continue;
-              const double lo = std::max(0., std::min(xi0, xi1));
-              const double hi = std::min(1., std::max(xi0, xi1));
-              if (hi <= lo)
-                continue;
-              // the two segments face each other where they overlap: at
-              // both ends of the overlap (the distance between the chords
-              // is affine in between), each lies in front of the other
-              // up to the longer one's length (facing_tolerance())
-              const double tolerance =
-                facing_tolerance(length, (m.x[1] - m.x[0]).norm());
-              const auto on_master = [&](const double xi) {
-                return m.x[0] + (xi - xi0) / (xi1 - xi0) * (m.x[1] - m.x[0]);
-              };
-              if (!in_front(s.normal,
-                            m.normal,
-                            s.x[0] + lo * along,
-                            on_master(lo),
-                            tolerance) ||
-                  !in_front(s.normal,
-                            m.normal,
-                            s.x[0] + hi * along,
-                            on_master(hi),
-                            tolerance))
-                continue;
-              const std::vector<double>       xi_m = node_coordinates(m);
-              const std::vector<unsigned int> n_m  = node_numbers(m);
-              // psi_a phi_b has degree k + k_master: Gauss points enough
-              const QGauss<1> overlap((k + xi_m.size()) / 2 + 1);
-              for (unsigned int q = 0; q < overlap.size(); ++q)
-                {
-                  const double xi    = lo + (hi - lo) * overlap.point(q)[0];
-                  const double w     = (hi - lo) * length * overlap.weight(q);
-                  const auto   phi_s = lagrange(xi_s, xi);
-                  // the master's functions at the same point: in its own
-                  // coordinate eta, which is affine in xi
-                  const auto phi_m = lagrange(xi_m, (xi - xi0) / (xi1 - xi0));
-                  for (unsigned int a = 0; a < n; ++a)
-                    {
-                      double psi = 0.;
-                      for (unsigned int b = 0; b < n; ++b)
-                        psi += dual(a, b) * phi_s[b];
-                      for (unsigned int b = 0; b < phi_m.size(); ++b)
-                        entries[n_s[a]][n_m[b]] += w * psi * phi_m[b];
-                    }
-                }
-            }
+            couple_segments(s, m, xi_s, n_s, dual, entries);
         }
       coupling.master.resize(n_slave_nodes);
       for (unsigned int s = 0; s < n_slave_nodes; ++s)

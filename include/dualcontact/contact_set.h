@@ -5,6 +5,7 @@
 #ifndef dualcontact_contact_set_h
 #define dualcontact_contact_set_h
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
@@ -16,12 +17,14 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <dualcontact/contact_functions.h>
+#include <dualcontact/contact_pairs.h>
 #include <dualcontact/friction_law.h>
 #include <dualcontact/obstacle.h>
-#include <dualcontact/scene.h>
 
 #include <array>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -29,66 +32,39 @@ namespace dualcontact
 {
   using namespace dealii;
 
+  template <int dim>
+  class Scene;
+
   /**
-   * A master node j that the dual function of a paired contact node sees:
-   * its DoFs and c_sj = M_sj / sum_j M_sj (doc/two_bodies.md).
+   * What ContactSet::setup() reads of a scene (contact_setup() takes it
+   * from one): the ids whose faces carry contact nodes, the contact pairs,
+   * the obstacle, the friction law and its parameter, and the body's
+   * size and centre.
    */
   template <int dim>
-  struct MasterTerm
+  struct ContactSetup
   {
-    std::array<types::global_dof_index, dim> dofs;
-    double                                   coefficient = 0.;
+    // the ids of the condition 'contact' and the slave ids of the pairs
+    std::set<types::boundary_id> contact_ids;
+    // the contact pairs, slave id -> master id, and whether their slave
+    // nodes see the master node to segment (else by the dual mortar)
+    std::map<types::boundary_id, types::boundary_id> pairs;
+    bool                                             node_to_segment = false;
+    const PlacedObstacle<dim>                       *obstacle        = nullptr;
+    const FrictionLaw                               *friction_law    = nullptr;
+    // F (Coulomb) or g (a given threshold) as a function of x; nullptr
+    // without friction
+    const Function<dim> *friction_parameter    = nullptr;
+    double               characteristic_length = 1.;
+    // rotations and the obstacle's normal without contact nodes are
+    // taken at it
+    Point<dim> center;
   };
 
-  /**
-   * One contact node s: a support point on Gamma_C, or on the slave side of
-   * a contact pair, that is not hanging.
-   */
+  /** The ContactSetup of a scene. */
   template <int dim>
-  struct ContactNode
-  {
-    std::array<types::global_dof_index, dim> dofs; // one per component
-    Point<dim>                               position;
-    double                                   weight = 0.; // m_s = int phi_s
-    // a_s, the factor on r and r_t at the node: 1, or 1 / coverage on a
-    // slave node that the master covers in part, so that its augmentation
-    // m_s a_s r is a whole node's (couple_pairs())
-    double augmentation = 1.;
-    double gap0         = 0.; // g0(x_s)
-    // n_s = -m(x_s), outward for the body, and an orthonormal basis of the
-    // plane orthogonal to it (tangent_basis in obstacle.h)
-    Tensor<1, dim>                      normal;
-    std::array<Tensor<1, dim>, dim - 1> tangents;
-    // the body's outward unit normal at the node (the mean of its faces')
-    Tensor<1, dim> body_normal;
-    // on the slave side of a contact pair: the master nodes it sees, so that
-    // its normal and tangential displacements are relative to the master's
-    // sum_j c_sj v_j; empty against the rigid obstacle
-    std::vector<MasterTerm<dim>> masters;
-    // the slave id of its pair; invalid_boundary_id against the obstacle
-    types::boundary_id pair_slave_id = numbers::invalid_boundary_id;
-  };
-
-  /**
-   * An orthonormal basis of the directions in which the supports hold
-   * `node`: a 'fixed' component, a 'normal fixed' plane through it. They are
-   * the lines of `constraints` on the node's DoFs that involve no other
-   * node's DoFs (a hanging node's line is no support).
-   */
-  template <int dim>
-  std::vector<Tensor<1, dim>>
-  held_directions(const ContactNode<dim>          &node,
-                  const AffineConstraints<double> &constraints);
-
-  /**
-   * An orthonormal basis of the plane orthogonal to `n`, in which each
-   * direction the `held` ones contain is a zero vector: friction does not act
-   * along a direction a support holds (doc/two_bodies.md).
-   */
-  template <int dim>
-  std::array<Tensor<1, dim>, dim - 1>
-  free_tangents(const Tensor<1, dim>              &n,
-                const std::vector<Tensor<1, dim>> &held);
+  ContactSetup<dim>
+  contact_setup(const Scene<dim> &scene);
 
   /**
    * The contact nodes owned by this rank, and the multipliers on them.
@@ -103,19 +79,19 @@ namespace dualcontact
   {
   public:
     /**
-     * Find the contact nodes on the boundary ids the scene marks 'contact'
-     * and compute their weights m_s = int_{Gamma_C} phi_s. The weight of a
-     * hanging node goes to the nodes it hangs on (through
-     * `hanging_node_constraints`), so sums over contact nodes remain exact
-     * quadratures. Nodes whose every component is otherwise constrained are
-     * left out. Multipliers are reset to zero.
+     * Find the contact nodes on the boundary ids of `input` (those of the
+     * condition 'contact' and the pairs' slave ids) and compute their weights
+     * m_s = int_{Gamma_C} phi_s. The weight of a hanging node goes to the nodes
+     * it hangs on (through `hanging_node_constraints`), so sums over contact
+     * nodes remain exact quadratures. Nodes whose every component is otherwise
+     * constrained are left out. Multipliers are reset to zero.
      */
     void
     setup(const Mapping<dim>              &mapping,
           const DoFHandler<dim>           &dof_handler,
           const AffineConstraints<double> &hanging_node_constraints,
           const AffineConstraints<double> &all_constraints,
-          const Scene<dim>                &scene);
+          const ContactSetup<dim>         &input);
 
     /**
      * The displacement of local node s relative to what it faces: v(s)
@@ -167,7 +143,10 @@ namespace dualcontact
      * entries of this rank's paired nodes (an import; collective).
      */
     const TrilinosWrappers::MPI::Vector &
-    with_masters(const TrilinosWrappers::MPI::Vector &v) const;
+    with_masters(const TrilinosWrappers::MPI::Vector &v) const
+    {
+      return pairs_.with_masters(v);
+    }
 
     /**
      * The DoFs of the master nodes of this rank's contact nodes, in an
@@ -180,7 +159,7 @@ namespace dualcontact
     bool
     has_pairs() const
     {
-      return has_pairs_;
+      return pairs_.active();
     }
 
     /**
@@ -189,7 +168,7 @@ namespace dualcontact
     types::global_dof_index
     n_uncovered_nodes() const
     {
-      return n_uncovered;
+      return pairs_.n_uncovered_nodes();
     }
 
     /**
@@ -199,7 +178,7 @@ namespace dualcontact
     double
     pairing_wall_time() const
     {
-      return pairing_time;
+      return pairs_.wall_time();
     }
 
     /**
@@ -210,11 +189,17 @@ namespace dualcontact
      */
     void
     add_pair_couplings(DynamicSparsityPattern          &pattern,
-                       const AffineConstraints<double> &constraints) const;
+                       const AffineConstraints<double> &constraints) const
+    {
+      pairs_.add_couplings(pattern, constraints, nodes);
+    }
 
     /** The rows add_pair_couplings() writes (this rank's paired nodes). */
     IndexSet
-    coupled_rows(const AffineConstraints<double> &constraints) const;
+    coupled_rows(const AffineConstraints<double> &constraints) const
+    {
+      return pairs_.coupled_rows(constraints, nodes);
+    }
 
     /**
      * The slip of v at local node s against the slip origin of the load
@@ -252,6 +237,10 @@ namespace dualcontact
      * calls it; a load step that moves the obstacle calls it again). The
      * multipliers stay.
      */
+    void
+    place_obstacle(const PlacedObstacle<dim> &obstacle, MPI_Comm comm);
+
+    /** place_obstacle() for the obstacle of `scene`. */
     void
     place_obstacle(const Scene<dim> &scene, MPI_Comm comm);
 
@@ -450,27 +439,35 @@ namespace dualcontact
 
   private:
     /**
-     * The master terms and gaps of the nodes on the slave ids of the
-     * scene's contact pairs (contact_pairs.cc): drops the nodes that face
-     * no master, and counts them. A hanging slave node is no contact node:
-     * its coupling goes to the nodes it hangs on, with the weights of
-     * `hanging_node_constraints`, as its weight m_s does. A direction in
-     * which `all_constraints` hold a slave node carries no part of the
-     * contact: its normal is turned off it, and a tangent along it is zero.
+     * The candidate contact nodes: the support points on the faces with
+     * the ids of `input`, from the owned and ghost cells, each slave node's
+     * id in `slave_id_of`; the weights and body normals they carry from
+     * the owned cells, summed over the ranks (setup()).
+     */
+    std::map<types::global_dof_index, ContactNode<dim>>
+    find_candidates(
+      const Mapping<dim>                                    &mapping,
+      const DoFHandler<dim>                                 &dof_handler,
+      const AffineConstraints<double>                       &hanging,
+      const std::set<types::boundary_id>                    &contact_ids,
+      TrilinosWrappers::MPI::Vector                         &weights,
+      TrilinosWrappers::MPI::Vector                         &body_normals,
+      std::map<types::global_dof_index, types::boundary_id> &slave_id_of,
+      double                                                &h_min) const;
+
+    /**
+     * The friction law of `input`, and at every node its parameter and the
+     * threshold at zero pressure; throws if the parameter is not finite or
+     * negative at some node.
      */
     void
-    couple_pairs(
-      const Mapping<dim>              &mapping,
-      const DoFHandler<dim>           &dof_handler,
-      const AffineConstraints<double> &hanging_node_constraints,
-      const AffineConstraints<double> &all_constraints,
-      const Scene<dim>                &scene,
-      const std::map<types::global_dof_index, types::boundary_id> &slave_id_of);
+    set_friction(const ContactSetup<dim> &input, MPI_Comm comm);
 
-    bool                                  has_pairs_   = false;
-    types::global_dof_index               n_uncovered  = 0;
-    double                                pairing_time = 0.;
-    mutable TrilinosWrappers::MPI::Vector ghosted, owned_copy;
+    // the contact pairs: pairing, mortar coupling, the master entries
+    ContactPairs<dim> pairs_;
+    // the body's size and centre (place_obstacle())
+    double     characteristic_length = 1.;
+    Point<dim> center;
 
     types::global_dof_index n_global  = 0;
     types::global_dof_index n_hanging = 0;
