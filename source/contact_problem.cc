@@ -60,11 +60,9 @@ namespace dualcontact
                         TimerOutput::wall_times)
       , report(parameters, scene, computing_timer, mpi_communicator, out)
       , triangulation_ptr(
-          make_triangulation<dim>(scene.cell_kind(), mpi_communicator))
-      , mapping_ptr(make_mapping<dim>(scene.cell_kind(),
-                                      parameters.discretization.degree))
-      , fe_ptr(make_element<dim>(scene.cell_kind(),
-                                 parameters.discretization.degree))
+          scene.discretization().make_triangulation(mpi_communicator))
+      , mapping_ptr(scene.discretization().make_mapping())
+      , fe_ptr(scene.discretization().make_element())
       , triangulation(*triangulation_ptr)
       , mapping(*mapping_ptr)
       , fe(*fe_ptr)
@@ -468,7 +466,7 @@ namespace dualcontact
     // stays the polygon of its vertices
     const GeometryParameters &geometry = parameters.geometry;
     if (parameters.discretization.degree > 1 &&
-        geometry.type == GeometryType::mesh_file &&
+        geometry.type == "mesh file" &&
         geometry.manifolds.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "dualcontact: warning: <Geometry/Manifolds> is empty: the "
@@ -482,7 +480,7 @@ namespace dualcontact
     check_initial_position(triangulation, scene);
     // a checkpoint keeps the mesh as p4est's forest
     if (parameters.output.checkpoint_interval > 0 && step_times.size() > 1 &&
-        scene.cell_kind() == CellKind::simplex)
+        scene.discretization().mesh_is_replicated())
       throw InputError(
         "<Output/Checkpoint interval> needs a mesh of quadrilaterals or "
         "hexahedra (a checkpoint keeps p4est's forest); this scene's mesh is "
@@ -970,7 +968,7 @@ namespace dualcontact
   {
     TimerOutput::Scope          t(computing_timer, "refine mesh");
     const RefinementParameters &refinement = parameters.refinement;
-    const bool simplex = scene.cell_kind() == CellKind::simplex;
+    const bool simplex = scene.discretization().mesh_is_replicated();
     if (refinement_indicator_kind(refinement.strategy).refines_every_cell())
       {
         // (a replicated mesh of simplices refines the cells that every

@@ -418,7 +418,7 @@ namespace Step1
     // begins: measure_contact_zone() takes it for a model cut by a plane of
     // symmetry and measures the whole zone, mirrored across x = 0.
     const double symmetry =
-      parameters.geometry.type == GeometryType::quarter_disc ? 2. : 1.;
+      parameters.geometry.type == "quarter disc" ? 2. : 1.;
     const Hertz hertz(parameters, symmetry * main.load);
     const auto  relative = [](const double x, const double exact) {
       return format("%+.2e", x / exact - 1.);

@@ -195,7 +195,7 @@ namespace Step4
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     ConditionalOStream pcout(std::cout, root);
     AssertThrow(scene.geometry.dimension == dim &&
-                  scene.geometry.type == GeometryType::half_disc &&
+                  scene.geometry.type == "half disc" &&
                   scene.friction.law == "coulomb",
                 ExcMessage("step-4 needs the 2D half disc with Coulomb "
                            "friction."));

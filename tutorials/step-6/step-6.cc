@@ -343,7 +343,7 @@ namespace Step6
     const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
     ConditionalOStream pcout(std::cout, root);
     AssertThrow(parameters.geometry.dimension == 2 &&
-                  parameters.geometry.type == GeometryType::mesh_file &&
+                  parameters.geometry.type == "mesh file" &&
                   parameters.obstacle.type == "cylinder" &&
                   parameters.friction.law == "none",
                 ExcMessage("step-6 needs a 2D scene on a mesh file with a "

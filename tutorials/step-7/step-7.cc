@@ -251,7 +251,7 @@ namespace Step7
     const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
     ConditionalOStream pcout(std::cout, root);
     AssertThrow(parameters.geometry.dimension == 3 &&
-                  parameters.geometry.type == GeometryType::half_disc &&
+                  parameters.geometry.type == "half disc" &&
                   parameters.friction.law == "coulomb",
                 ExcMessage("step-7 needs the 3D half ball with Coulomb "
                            "friction"));

@@ -194,7 +194,7 @@ namespace Step9
     const unsigned int n_cycles = scene.refinement.n_cycles;
     tutorial::require(
       scene.geometry.dimension == dim &&
-        scene.geometry.type == GeometryType::half_disc &&
+        scene.geometry.type == "half disc" &&
         scene.friction.law == "none" && scene.refinement.strategy == "global" &&
         n_cycles >= 2,
       "step-9 compares the rates of frictionless plane-strain "
