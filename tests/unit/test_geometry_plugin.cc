@@ -162,10 +162,11 @@ TEST_CASE("A geometry kind registered from outside the library is offered, "
   Parameters strip;
   strip.read_string(read_text(test_file("../prm/patch.prm")), strip_scene);
   const std::vector<std::string> on_strip = strip.ineffective_entries();
-  REQUIRE(on_strip.size() == 3);
-  CHECK(contains(on_strip[0],
-                 "<Geometry/Lower left corner> has no effect: "
-                 "<Geometry/Type> is 'strip' (it is for the rectangle)"));
+  REQUIRE(!on_strip.empty());
+  for (const std::string &warning : on_strip)
+    CHECK(contains(warning,
+                   "has no effect: <Geometry/Type> is 'strip' (it is for the "
+                   "rectangle)"));
 
   // its check and its boundary ids run where the parameters are read
   for (const auto &[overrides, message] :
