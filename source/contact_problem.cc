@@ -465,8 +465,7 @@ namespace dualcontact
     // a mapping of degree k follows the manifolds: a mesh file without them
     // stays the polygon of its vertices
     const GeometryParameters &geometry = parameters.geometry;
-    if (parameters.discretization.degree > 1 &&
-        geometry.type == "mesh file" &&
+    if (parameters.discretization.degree > 1 && geometry.type == "mesh file" &&
         geometry.manifolds.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "dualcontact: warning: <Geometry/Manifolds> is empty: the "

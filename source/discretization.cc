@@ -147,8 +147,7 @@ namespace dualcontact
 
   template <int dim>
   std::unique_ptr<parallel::TriangulationBase<dim>>
-  Discretization<dim>::make_triangulation(
-    const MPI_Comm mpi_communicator) const
+  Discretization<dim>::make_triangulation(const MPI_Comm mpi_communicator) const
   {
     return dualcontact::make_triangulation<dim>(kind, mpi_communicator);
   }

@@ -67,8 +67,8 @@ namespace dualcontact
                      const std::vector<double> &times,
                      const double               length)
   {
-    auto path = try_parse<1>(
-      expression, dim, "t", {{"pi", numbers::PI}}, false, length);
+    auto path =
+      try_parse<1>(expression, dim, "t", {{"pi", numbers::PI}}, false, length);
     if (path == nullptr)
       throw InputError("The entry <Obstacle/Displacement> is not a valid "
                        "expression in t: '" +

@@ -115,7 +115,7 @@ namespace dualcontact
     const std::function<void(double)> &before_refining) const
   {
     const GeometryParameters &g        = parameters.geometry;
-    const bool simplex = discretization_->mesh_is_replicated();
+    const bool                simplex  = discretization_->mesh_is_replicated();
     const double              children = std::pow(2., dim);
     if (before_refining)
       before_refining(
@@ -188,11 +188,9 @@ namespace dualcontact
 
 
   template void
-  Scene<2>::refine_initial_mesh(
-    parallel::TriangulationBase<2> &,
-    const std::function<void(double)> &) const;
+  Scene<2>::refine_initial_mesh(parallel::TriangulationBase<2> &,
+                                const std::function<void(double)> &) const;
   template void
-  Scene<3>::refine_initial_mesh(
-    parallel::TriangulationBase<3> &,
-    const std::function<void(double)> &) const;
+  Scene<3>::refine_initial_mesh(parallel::TriangulationBase<3> &,
+                                const std::function<void(double)> &) const;
 } // namespace dualcontact

@@ -237,9 +237,8 @@ namespace dualcontact
   {
     // the simplices and their element (quadrilaterals are the default)
     const std::string cells = scene.discretization().cells_in_words();
-    pcout << "dualcontact: " << dim << "D, "
-          << parameters.geometry.type << cells
-          << ", E = " << parameters.material.youngs_modulus
+    pcout << "dualcontact: " << dim << "D, " << parameters.geometry.type
+          << cells << ", E = " << parameters.material.youngs_modulus
           << ", nu = " << parameters.material.poissons_ratio << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI rank(s)\n";

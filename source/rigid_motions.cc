@@ -38,8 +38,8 @@ namespace dualcontact
     {
       // the cells' straight-sided map: the boundary as its vertices'
       // polygon (or polyhedron) is exact enough for the question asked
-      const Discretization<dim> cells(cell_kind(triangulation), 1);
-      const FE_Nothing<dim>     fe(cells.reference_cell());
+      const Discretization<dim>           cells(cell_kind(triangulation), 1);
+      const FE_Nothing<dim>               fe(cells.reference_cell());
       const std::unique_ptr<Mapping<dim>> mapping    = cells.make_mapping();
       const Quadrature<dim - 1>           quadrature = cells.face_quadrature(2);
       FEFaceValues<dim>                   fe_face(*mapping,
@@ -179,28 +179,28 @@ namespace dualcontact
 
   template bool
   Scene<2>::translation_is_free(const Tensor<1, 2> &,
-                                 const Triangulation<2> &,
-                                 const std::vector<unsigned int> *,
-                                 unsigned int) const;
+                                const Triangulation<2> &,
+                                const std::vector<unsigned int> *,
+                                unsigned int) const;
   template Tensor<1, 2>
   Scene<2>::rigid_motion(unsigned int, const Point<2> &) const;
   template FullMatrix<double>
   Scene<2>::rigid_motion_gram(const Triangulation<2> &,
-                               double &,
-                               const std::vector<unsigned int> *) const;
+                              double &,
+                              const std::vector<unsigned int> *) const;
   template void
   Scene<2>::check_rigid_motions(const Triangulation<2> &) const;
   template bool
   Scene<3>::translation_is_free(const Tensor<1, 3> &,
-                                 const Triangulation<3> &,
-                                 const std::vector<unsigned int> *,
-                                 unsigned int) const;
+                                const Triangulation<3> &,
+                                const std::vector<unsigned int> *,
+                                unsigned int) const;
   template Tensor<1, 3>
   Scene<3>::rigid_motion(unsigned int, const Point<3> &) const;
   template FullMatrix<double>
   Scene<3>::rigid_motion_gram(const Triangulation<3> &,
-                               double &,
-                               const std::vector<unsigned int> *) const;
+                              double &,
+                              const std::vector<unsigned int> *) const;
   template void
   Scene<3>::check_rigid_motions(const Triangulation<3> &) const;
 } // namespace dualcontact

@@ -95,8 +95,9 @@ namespace dualcontact
     // rank (it is small): its size is the scene's length, and its boundary
     // ids are what the conditions must name.
     geometry_ = create_geometry<dim>(parameters, before_building);
-    discretization_ = std::make_unique<Discretization<dim>>(
-      geometry_->cell_kind(), parameters.discretization.degree);
+    discretization_ =
+      std::make_unique<Discretization<dim>>(geometry_->cell_kind(),
+                                            parameters.discretization.degree);
     const double length = characteristic_length();
     // the loads follow the load path (doc/theory.md §11)
     const std::vector<double> times = parameters.load_path.step_times();
@@ -147,7 +148,6 @@ namespace dualcontact
                                            material,
                                            "Exact solution/Contact pressure",
                                            length);
-
   }
 
   template <int dim>

@@ -122,8 +122,7 @@ namespace dualcontact
   struct GeometryParameters
   {
     unsigned int              dimension = 2;
-    // <Geometry/Type>: the name of a registered kind (geometry.h)
-    std::string               type      = "rectangle";
+    std::string               type      = "rectangle"; // a kind of geometry.h
     CellKind                  cell_kind = CellKind::quadrilateral;
     std::vector<double>       lower_left;
     std::vector<double>       upper_right;

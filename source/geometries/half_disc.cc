@@ -11,9 +11,9 @@
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_helpers.h>
 
-#include "disc.h"
-
 #include <cmath>
+
+#include "disc.h"
 
 namespace dualcontact
 {
@@ -55,8 +55,8 @@ namespace dualcontact
     {
       if (!(geometry.radius > 0.))
         throw InputError("The entry <Geometry/Radius> must be positive: " +
-                           what + " of radius " +
-                           number_text(geometry.radius) + " has no area.",
+                           what + " of radius " + number_text(geometry.radius) +
+                           " has no area.",
                          exit_invalid_value);
     }
 
@@ -204,8 +204,8 @@ namespace dualcontact
                        const Point<dim>   &center,
                        const bool          simplex)
       {
-        triangulation.set_all_manifold_ids(
-          simplex ? numbers::flat_manifold_id : 1);
+        triangulation.set_all_manifold_ids(simplex ? numbers::flat_manifold_id :
+                                                     1);
         if (simplex)
           {
             // by hand: deal.II 9.4's set_all_manifold_ids_on_boundary()

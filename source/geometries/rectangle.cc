@@ -11,9 +11,9 @@
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_helpers.h>
 
-#include "box.h"
-
 #include <cmath>
+
+#include "box.h"
 
 namespace dualcontact
 {
@@ -163,7 +163,8 @@ namespace dualcontact
       double
       n_coarse_cells() const override
       {
-        return box::n_cells<dim>(g.subdivisions, g.cell_kind == CellKind::simplex);
+        return box::n_cells<dim>(g.subdivisions,
+                                 g.cell_kind == CellKind::simplex);
       }
 
       void
@@ -171,8 +172,8 @@ namespace dualcontact
       {
         std::vector<unsigned int> repetitions(g.subdivisions.begin(),
                                               g.subdivisions.end());
-        const Point<dim> lower = to_point<dim>(g.lower_left);
-        const Point<dim> upper = to_point<dim>(g.upper_right);
+        const Point<dim>          lower = to_point<dim>(g.lower_left);
+        const Point<dim>          upper = to_point<dim>(g.upper_right);
         if (g.cell_kind != CellKind::simplex)
           {
             GridGenerator::subdivided_hyper_rectangle(

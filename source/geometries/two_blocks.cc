@@ -9,11 +9,11 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
 
-#include "box.h"
-#include "join_bodies.h"
-
 #include <array>
 #include <cmath>
+
+#include "box.h"
+#include "join_bodies.h"
 
 namespace dualcontact
 {

@@ -9,10 +9,10 @@
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_helpers.h>
 
+#include <cmath>
+
 #include "disc.h"
 #include "join_bodies.h"
-
-#include <cmath>
 
 namespace dualcontact
 {
@@ -155,8 +155,7 @@ namespace dualcontact
       if (!(geometry.lower_radius > 0.))
         throw InputError("The entry <Geometry/Lower radius> must be positive: "
                          "a half disc of radius " +
-                           number_text(geometry.lower_radius) +
-                           " has no area.",
+                           number_text(geometry.lower_radius) + " has no area.",
                          exit_invalid_value);
     }
 

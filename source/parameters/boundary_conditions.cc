@@ -187,7 +187,7 @@ namespace dualcontact
     const GeometryParameters &geometry = parameters.geometry;
     const unsigned int        dim      = geometry.dimension;
     const unsigned int        n_ids    = n_geometry_boundary_ids(geometry);
-    const std::string shape = geometry.type;
+    const std::string         shape    = geometry.type;
     // a mesh file's ids are checked once it is read (Scene)
     for (const auto &[id, condition] : conditions)
       if (id >= n_ids)

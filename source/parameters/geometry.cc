@@ -57,8 +57,7 @@ namespace dualcontact
         {
           const Hook function = geometry_kind(name).*hook;
           if (function != nullptr &&
-              std::find(called.begin(), called.end(), function) ==
-                called.end())
+              std::find(called.begin(), called.end(), function) == called.end())
             {
               function(arguments...);
               called.push_back(function);
@@ -192,7 +191,6 @@ namespace dualcontact
                                exit_inconsistent);
           }
       }
-
   }
 
   void
@@ -287,15 +285,15 @@ namespace dualcontact
                  group.purpose + ")"});
         }
     const std::vector<IneffectiveRule> refinement = {
-            {pre_refinement_steps == 0,
-             "Geometry",
-             {"Pre-refinement distance", "Pre-refinement grading"},
-             "<Geometry/Pre-refinement steps> is 0"},
-            {pre_refinement_steps == 1,
-             "Geometry",
-             {"Pre-refinement grading"},
-             "it shrinks the distance from the second pre-refinement step on, "
-             "and <Geometry/Pre-refinement steps> is 1"}};
+      {pre_refinement_steps == 0,
+       "Geometry",
+       {"Pre-refinement distance", "Pre-refinement grading"},
+       "<Geometry/Pre-refinement steps> is 0"},
+      {pre_refinement_steps == 1,
+       "Geometry",
+       {"Pre-refinement grading"},
+       "it shrinks the distance from the second pre-refinement step on, "
+       "and <Geometry/Pre-refinement steps> is 1"}};
     rules.insert(rules.end(), refinement.begin(), refinement.end());
     return rules;
   }

@@ -54,8 +54,8 @@ namespace
       std::vector<unsigned int> cells(dim, 1);
       cells[0] = strip_cells;
       for (unsigned int d = 1; d < dim; ++d)
-        cells[d] = static_cast<unsigned int>(
-          std::lround(strip_cells / strip_length));
+        cells[d] =
+          static_cast<unsigned int>(std::lround(strip_cells / strip_length));
       Point<dim> upper;
       for (unsigned int d = 0; d < dim; ++d)
         upper[d] = d == 0 ? strip_length : 1.;
@@ -213,7 +213,7 @@ TEST_CASE("The patch test on a user's strip: the exact pressure 1 at every "
   double      difference  = 0.;
   for (const auto i : u_rectangle.locally_owned_elements())
     difference = std::max(difference, std::abs(u_strip[i] - u_rectangle[i]));
-  difference = Utilities::MPI::max(difference, on_rectangle.comm);
+  difference         = Utilities::MPI::max(difference, on_rectangle.comm);
   const double u_max = max_entry(u_rectangle, on_rectangle.comm);
   INFO("largest |u| " << u_max << ", largest difference " << difference);
   CHECK(u_max > 5e-4);

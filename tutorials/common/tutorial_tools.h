@@ -230,8 +230,7 @@ namespace dualcontact
       radius_of(const Parameters &parameters)
       {
         const std::string type = parameters.geometry.type;
-        if (type == "half disc" ||
-            type == "quarter disc")
+        if (type == "half disc" || type == "quarter disc")
           return parameters.geometry.radius;
         const auto radius = parameters.obstacle.values.find("Obstacle/Radius");
         if (radius != parameters.obstacle.values.end() &&

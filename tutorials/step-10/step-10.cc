@@ -312,8 +312,7 @@ namespace Step10
     const unsigned int n_meshes = n_cycles + extra_meshes;
     const unsigned int last     = n_cycles - 1; // the scene's last mesh
     tutorial::require(
-      scene.geometry.dimension == dim &&
-        scene.geometry.type == "rectangle" &&
+      scene.geometry.dimension == dim && scene.geometry.type == "rectangle" &&
         scene.friction.law == "coulomb" &&
         scene.refinement.strategy == "global" && n_cycles >= 2,
       "step-10 compares P1 and Q1 on the block against the wall: it needs "

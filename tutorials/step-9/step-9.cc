@@ -193,8 +193,7 @@ namespace Step9
     const bool         timing   = scene.output.print_timing;
     const unsigned int n_cycles = scene.refinement.n_cycles;
     tutorial::require(
-      scene.geometry.dimension == dim &&
-        scene.geometry.type == "half disc" &&
+      scene.geometry.dimension == dim && scene.geometry.type == "half disc" &&
         scene.friction.law == "none" && scene.refinement.strategy == "global" &&
         n_cycles >= 2,
       "step-9 compares the rates of frictionless plane-strain "
