@@ -61,11 +61,9 @@ namespace dualcontact
                         TimerOutput::wall_times)
       , report(parameters, scene, computing_timer, mpi_communicator, out)
       , triangulation_ptr(
-          make_triangulation<dim>(scene.cell_kind(), mpi_communicator))
-      , mapping_ptr(make_mapping<dim>(scene.cell_kind(),
-                                      parameters.discretization.degree))
-      , fe_ptr(make_element<dim>(scene.cell_kind(),
-                                 parameters.discretization.degree))
+          scene.discretization().make_triangulation(mpi_communicator))
+      , mapping_ptr(scene.discretization().make_mapping())
+      , fe_ptr(scene.discretization().make_element())
       , triangulation(*triangulation_ptr)
       , mapping(*mapping_ptr)
       , fe(*fe_ptr)
@@ -528,7 +526,7 @@ namespace dualcontact
   {
     TimerOutput::Scope          t(computing_timer, "refine mesh");
     const RefinementParameters &refinement = parameters.refinement;
-    const bool simplex = scene.cell_kind() == CellKind::simplex;
+    const bool simplex = scene.discretization().mesh_is_replicated();
     if (refinement_indicator_kind(refinement.strategy).refines_every_cell())
       {
         // (a replicated mesh of simplices refines the cells that every

@@ -41,8 +41,7 @@ namespace dualcontact
     // a mapping of degree k follows the manifolds: a mesh file without them
     // stays the polygon of its vertices
     const GeometryParameters &geometry = parameters.geometry;
-    if (parameters.discretization.degree > 1 &&
-        geometry.type == GeometryType::mesh_file &&
+    if (parameters.discretization.degree > 1 && geometry.type == "mesh file" &&
         geometry.manifolds.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "dualcontact: warning: <Geometry/Manifolds> is empty: the "
@@ -56,7 +55,7 @@ namespace dualcontact
     check_initial_position(triangulation, scene);
     // a checkpoint keeps the mesh as p4est's forest
     if (parameters.output.checkpoint_interval > 0 && step_times.size() > 1 &&
-        scene.cell_kind() == CellKind::simplex)
+        scene.discretization().mesh_is_replicated())
       throw InputError(
         "<Output/Checkpoint interval> needs a mesh of quadrilaterals or "
         "hexahedra (a checkpoint keeps p4est's forest); this scene's mesh is "

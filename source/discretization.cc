@@ -139,6 +139,73 @@ namespace dualcontact
   }
 
   template <int dim>
+  Discretization<dim>::Discretization(const CellKind     kind,
+                                      const unsigned int degree)
+      : kind(kind)
+      , degree_(degree)
+  {}
+
+  template <int dim>
+  std::unique_ptr<parallel::TriangulationBase<dim>>
+  Discretization<dim>::make_triangulation(const MPI_Comm mpi_communicator) const
+  {
+    return dualcontact::make_triangulation<dim>(kind, mpi_communicator);
+  }
+
+  template <int dim>
+  std::unique_ptr<FiniteElement<dim>>
+  Discretization<dim>::make_element() const
+  {
+    return dualcontact::make_element<dim>(kind, degree_);
+  }
+
+  template <int dim>
+  std::unique_ptr<Mapping<dim>>
+  Discretization<dim>::make_mapping() const
+  {
+    return dualcontact::make_mapping<dim>(kind, degree_);
+  }
+
+  template <int dim>
+  std::unique_ptr<Mapping<dim>>
+  Discretization<dim>::make_mapping(const unsigned int degree) const
+  {
+    return dualcontact::make_mapping<dim>(kind, degree);
+  }
+
+  template <int dim>
+  ReferenceCell
+  Discretization<dim>::reference_cell() const
+  {
+    return kind == CellKind::simplex ? ReferenceCells::get_simplex<dim>() :
+                                       ReferenceCells::get_hypercube<dim>();
+  }
+
+  template <int dim>
+  Quadrature<dim>
+  Discretization<dim>::cell_quadrature(const unsigned int n) const
+  {
+    return gauss_rule<dim>(reference_cell(), n);
+  }
+
+  template <int dim>
+  Quadrature<dim - 1>
+  Discretization<dim>::face_quadrature(const unsigned int n) const
+  {
+    return gauss_rule<dim - 1>(reference_cell().face_reference_cell(0), n);
+  }
+
+  template <int dim>
+  std::string
+  Discretization<dim>::cells_in_words() const
+  {
+    return kind == CellKind::simplex ?
+             std::string(dim == 2 ? " of triangles" : " of tetrahedra") +
+               ", P" + std::to_string(degree_) :
+             "";
+  }
+
+  template <int dim>
   CellKind
   cell_kind(const Triangulation<dim> &triangulation)
   {
@@ -160,6 +227,8 @@ namespace dualcontact
   make_mapping<2>(CellKind, unsigned int);
   template std::unique_ptr<Mapping<3>>
   make_mapping<3>(CellKind, unsigned int);
+  template class Discretization<2>;
+  template class Discretization<3>;
   template class SimplexMapping<2>;
   template class SimplexMapping<3>;
   template Quadrature<2>

@@ -5,6 +5,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <dualcontact/geometry.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_helpers.h>
@@ -275,12 +276,12 @@ namespace dualcontact
       if (!three)
         return;
       const std::vector<std::array<std::string, 3>> defaults = {
-        {{"Geometry", "Lower left corner", "0, 0, 0"}},
-        {{"Geometry", "Upper right corner", "1, 1, 1"}},
-        {{"Geometry", "Subdivisions", "1, 1, 1"}},
-        {{"Geometry", "Center", "0, 0, 0"}},
         {{"Loads", "Body force", "0; 0; 0"}}};
       std::vector<std::array<std::string, 3>> all = defaults;
+      for (const std::string &name : geometry_names())
+        for (const auto &entry : geometry_kind(name).defaults_3d)
+          if (std::find(all.begin(), all.end(), entry) == all.end())
+            all.push_back(entry);
       for (const std::string &name : obstacle_names())
         for (const auto &entry : obstacle_kind(name).defaults_3d)
           if (std::find(all.begin(), all.end(), entry) == all.end())

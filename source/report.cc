@@ -131,14 +131,9 @@ namespace dualcontact
   Report<dim>::print_scene() const
   {
     // the simplices and their element (quadrilaterals are the default)
-    const std::string cells =
-      scene.cell_kind() == CellKind::simplex ?
-        std::string(dim == 2 ? " of triangles" : " of tetrahedra") + ", P" +
-          std::to_string(parameters.discretization.degree) :
-        "";
-    pcout << "dualcontact: " << dim << "D, "
-          << to_string(parameters.geometry.type) << cells
-          << ", E = " << parameters.material.youngs_modulus
+    const std::string cells = scene.discretization().cells_in_words();
+    pcout << "dualcontact: " << dim << "D, " << parameters.geometry.type
+          << cells << ", E = " << parameters.material.youngs_modulus
           << ", nu = " << parameters.material.poissons_ratio << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI rank(s)\n";

@@ -1,3 +1,4 @@
+#include <dualcontact/geometry.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameter_helpers.h>
 #include <dualcontact/refinement_indicator.h>
@@ -106,15 +107,10 @@ namespace dualcontact
       const GeometryParameters   &g = parameters.geometry;
       const RefinementParameters &r = parameters.refinement;
       std::vector<std::string>    entries;
-      if (is_box(g.type))
-        {
-          std::string n;
-          for (const unsigned int s : g.subdivisions)
-            n += (n.empty() ? "" : ", ") + std::to_string(s);
-          entries.push_back(setting("Geometry/Subdivisions", n));
-        }
-      if (g.type == GeometryType::mesh_file)
-        entries.push_back(setting("Geometry/Mesh file", g.mesh_file_given));
+      const auto size_entries = geometry_kind(g.type).size_entries;
+      if (size_entries != nullptr)
+        for (const auto &[entry, value] : size_entries(g))
+          entries.push_back(setting(entry, value));
       if (r.initial_global_refinement > 0)
         entries.push_back(setting("Refinement/Initial global refinement",
                                   std::to_string(r.initial_global_refinement)));

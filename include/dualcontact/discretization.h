@@ -1,6 +1,8 @@
 // The two kinds of cells and what each takes: the triangulation, the
 // finite element, the mapping and the quadrature rules (doc/theory.md §4,
-// doc/simplices.md).
+// doc/simplices.md). Discretization answers these questions for a scene's
+// cell kind and degree, so that the rest of the code does not branch on
+// the kind.
 #ifndef dualcontact_discretization_h
 #define dualcontact_discretization_h
 
@@ -13,9 +15,12 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/fe/mapping_fe.h>
 
+#include <deal.II/grid/reference_cell.h>
+
 #include <dualcontact/parameters.h>
 
 #include <memory>
+#include <string>
 
 namespace dualcontact
 {
@@ -108,6 +113,80 @@ namespace dualcontact
   support_on_face(const FiniteElement<dim> &fe,
                   unsigned int              i,
                   unsigned int              face);
+
+  /**
+   * The cells of a scene and its element: every question whose answer
+   * depends on the cell kind (CellKind, parameters.h), answered for the
+   * kind and the polynomial degree it is built with.
+   */
+  template <int dim>
+  class Discretization
+  {
+  public:
+    Discretization(CellKind kind, unsigned int degree);
+
+    CellKind
+    cell_kind() const
+    {
+      return kind;
+    }
+
+    unsigned int
+    degree() const
+    {
+      return degree_;
+    }
+
+    /**
+     * Whether every rank holds the whole mesh (a
+     * parallel::shared::Triangulation of simplices): a refinement flags the
+     * cells every rank sees alike, not only the locally owned ones, and a
+     * checkpoint (p4est's forest) cannot keep it.
+     */
+    bool
+    mesh_is_replicated() const
+    {
+      return kind == CellKind::simplex;
+    }
+
+    /** The empty triangulation on the communicator (make_triangulation). */
+    std::unique_ptr<parallel::TriangulationBase<dim>>
+    make_triangulation(MPI_Comm mpi_communicator) const;
+
+    /** The element of the degree (make_element). */
+    std::unique_ptr<FiniteElement<dim>>
+    make_element() const;
+
+    /** The mapping of the degree, or of `degree` (make_mapping). */
+    std::unique_ptr<Mapping<dim>>
+    make_mapping() const;
+    std::unique_ptr<Mapping<dim>>
+    make_mapping(unsigned int degree) const;
+
+    /** The reference cell: the square (cube) or the triangle (tetrahedron). */
+    ReferenceCell
+    reference_cell() const;
+
+    /**
+     * Gauss rules with n points per direction on a cell and on a face of
+     * the reference cell (cell_quadrature(), face_quadrature()).
+     */
+    Quadrature<dim>
+    cell_quadrature(unsigned int n) const;
+    Quadrature<dim - 1>
+    face_quadrature(unsigned int n) const;
+
+    /**
+     * The cells and element in words for the log: " of triangles, P2" on
+     * simplices, empty for quadrilaterals (the default).
+     */
+    std::string
+    cells_in_words() const;
+
+  private:
+    const CellKind     kind;
+    const unsigned int degree_;
+  };
 
   /** The kind of the cells of a triangulation (simplex if any is one). */
   template <int dim>

@@ -31,23 +31,6 @@ namespace dualcontact
    */
   using EntryValues = std::map<std::string, std::string>;
 
-  enum class GeometryType
-  {
-    rectangle,
-    half_disc,
-    quarter_disc,
-    two_blocks, // a box cut across x_{dim-1}: two bodies (doc/two_bodies.md)
-    two_half_discs, // two half discs (balls) touching at a point
-    mesh_file       // a Gmsh .msh file (doc/meshes.md)
-  };
-
-  /** The axis-parallel boxes: the rectangle, and the two blocks. */
-  inline bool
-  is_box(const GeometryType type)
-  {
-    return type == GeometryType::rectangle || type == GeometryType::two_blocks;
-  }
-
   /**
    * Quadrilaterals (hexahedra in 3D) with FE_Q(k), or simplices, triangles
    * (tetrahedra) with FE_SimplexP(k): <Geometry/Cell type> (discretization.h).
@@ -83,8 +66,6 @@ namespace dualcontact
   };
 
   /** The names of the choices, as the .prm file writes them. */
-  const NameTable<GeometryType> &
-  geometry_type_names();
   const NameTable<CellKind> &
   cell_kind_names();
   const NameTable<BoundaryCondition> &
@@ -96,8 +77,6 @@ namespace dualcontact
 
   std::string
   to_string(const BoundaryCondition condition);
-  std::string
-  to_string(const GeometryType type);
 
   /**
    * Entries that have no effect in a scene when `applies`, and why: each
@@ -143,7 +122,7 @@ namespace dualcontact
   struct GeometryParameters
   {
     unsigned int              dimension = 2;
-    GeometryType              type      = GeometryType::rectangle;
+    std::string               type      = "rectangle"; // a kind of geometry.h
     CellKind                  cell_kind = CellKind::quadrilateral;
     std::vector<double>       lower_left;
     std::vector<double>       upper_right;

@@ -15,7 +15,9 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <dualcontact/discretization.h>
+#include <dualcontact/expressions.h>
 #include <dualcontact/friction_law.h>
+#include <dualcontact/geometry.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameters.h>
 
@@ -24,27 +26,11 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace dualcontact
 {
   using namespace dealii;
-
-  /**
-   * An expression of <entry> ("a; b" for a vector) as a function of x, y
-   * (z) with the constants pi, E, nu, lambda, mu; gradients by fourth-order
-   * differences with a step 1e-4 `length`. With `times` (the steps of the
-   * load path), also of the time t, set by Function::set_time(). Throws
-   * InputError naming the entry if it does not parse, has the wrong number
-   * of components, or uses t without `times`.
-   */
-  template <int dim>
-  std::unique_ptr<Function<dim>>
-  make_function(const std::string         &expression,
-                const unsigned int         n_components,
-                const MaterialParameters  &material,
-                const std::string         &entry,
-                const double               length,
-                const std::vector<double> &times = {});
 
   /**
    * The bodies of a mesh: the connected components of its coarse mesh
@@ -148,7 +134,14 @@ namespace dualcontact
     CellKind
     cell_kind() const
     {
-      return kind_;
+      return discretization_->cell_kind();
+    }
+
+    /** The element, mapping, quadratures and triangulation of the cells. */
+    const Discretization<dim> &
+    discretization() const
+    {
+      return *discretization_;
     }
 
     /**
@@ -321,11 +314,21 @@ namespace dualcontact
     const Parameters &parameters;
 
   private:
-    // the coarse mesh of a mesh file (empty for the built-in shapes), and
-    // its bounding box
-    Triangulation<dim> coarse_mesh;
-    Point<dim>         mesh_lower_left, mesh_upper_right;
-    CellKind           kind_ = CellKind::quadrilateral;
+    /** The loads, prescribed displacements and exact solutions. */
+    void
+    make_loads(double length, const std::vector<double> &times);
+    /** The obstacle and its path; returns <Obstacle/Displacement>'s
+     * components joined by ';'. */
+    std::string
+    make_obstacle(double length, const std::vector<double> &times);
+    /** The effects, and the friction law with its function. */
+    void
+    find_effects(double                     length,
+                 const std::vector<double> &times,
+                 const std::string         &path);
+
+    std::unique_ptr<Geometry<dim>>       geometry_;
+    std::unique_ptr<Discretization<dim>> discretization_;
 
     Effects                                                      effects_;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> displacements;

@@ -1,6 +1,7 @@
 // <Boundary conditions>: which condition holds on which boundary id.
 #include <deal.II/base/utilities.h>
 
+#include <dualcontact/geometry.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameter_helpers.h>
 #include <dualcontact/parameters.h>
@@ -194,16 +195,11 @@ namespace dualcontact
   {
     const GeometryParameters &geometry = parameters.geometry;
     const unsigned int        dim      = geometry.dimension;
-    const unsigned int        n_ids =
-      geometry.type == GeometryType::rectangle      ? 2 * dim :
-             geometry.type == GeometryType::two_blocks     ? 2 * dim + 2 :
-             geometry.type == GeometryType::two_half_discs ? 4 :
-             geometry.type == GeometryType::quarter_disc   ? 3 :
-                                                             2;
-    const std::string shape = to_string(geometry.type);
+    const unsigned int        n_ids    = n_geometry_boundary_ids(geometry);
+    const std::string         shape    = geometry.type;
     // a mesh file's ids are checked once it is read (Scene)
     for (const auto &[id, condition] : conditions)
-      if (geometry.type != GeometryType::mesh_file && id >= n_ids)
+      if (id >= n_ids)
         throw InputError("The entry <Boundary conditions/Conditions> names "
                          "boundary id " +
                            std::to_string(id) + ", which the geometry '" +
@@ -264,7 +260,7 @@ namespace dualcontact
                            exit_inconsistent);
         for (const boundary_id id : {slave, master})
           {
-            if (geometry.type != GeometryType::mesh_file && id >= n_ids)
+            if (id >= n_ids)
               throw InputError(pair + ", but the geometry '" + shape +
                                  "' has no boundary id " + std::to_string(id) +
                                  " (its ids are 0 to " +

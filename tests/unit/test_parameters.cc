@@ -53,7 +53,7 @@ TEST_CASE("The default parameter file parses back and gives the defaults",
   Parameters parameters;
   REQUIRE_NOTHROW(parameters.read_string(text));
   CHECK(parameters.geometry.dimension == 2);
-  CHECK(parameters.geometry.type == GeometryType::rectangle);
+  CHECK(parameters.geometry.type == "rectangle");
   CHECK(parameters.material.youngs_modulus == 1.);
   CHECK(parameters.material.poissons_ratio == 0.3);
   CHECK(parameters.boundary.conditions.empty());

@@ -158,9 +158,8 @@ namespace dualcontact
       static double
       radius_of(const Parameters &parameters)
       {
-        const GeometryType type = parameters.geometry.type;
-        if (type == GeometryType::half_disc ||
-            type == GeometryType::quarter_disc)
+        const std::string type = parameters.geometry.type;
+        if (type == "half disc" || type == "quarter disc")
           return parameters.geometry.radius;
         const auto radius = parameters.obstacle.values.find("Obstacle/Radius");
         if (radius != parameters.obstacle.values.end() &&

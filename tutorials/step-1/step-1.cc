@@ -513,7 +513,7 @@ namespace Step1
     // begins: measure_contact_zone() takes it for a model cut by a plane of
     // symmetry and measures the whole zone, mirrored across x = 0.
     const double factor =
-      parameters.geometry.type == GeometryType::quarter_disc ? 2. : 1.;
+      parameters.geometry.type == "quarter disc" ? 2. : 1.;
     symmetry = factor;
   }
 

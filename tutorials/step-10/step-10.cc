@@ -404,8 +404,7 @@ namespace Step10
   ElementComparison::check_scene()
   {
     tutorial::require(
-      scene.geometry.dimension == dim &&
-        scene.geometry.type == GeometryType::rectangle &&
+      scene.geometry.dimension == dim && scene.geometry.type == "rectangle" &&
         scene.friction.law == "coulomb" &&
         scene.refinement.strategy == "global" && n_cycles >= 2,
       "step-10 compares P1 and Q1 on the block against the wall: it needs "

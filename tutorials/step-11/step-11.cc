@@ -688,7 +688,7 @@ end
   {
     tutorial::require(
       scene.geometry.dimension == dim &&
-        scene.geometry.type == GeometryType::two_half_discs &&
+        scene.geometry.type == "two half discs" &&
         scene.boundary.contact_pairs.size() == 1 &&
         scene.friction.law == "coulomb" &&
         scene.boundary.displacements.size() == 1 &&

@@ -258,7 +258,7 @@ namespace Step4
   FrictionInHertz::check_scene()
   {
     AssertThrow(scene.geometry.dimension == dim &&
-                  scene.geometry.type == GeometryType::half_disc &&
+                  scene.geometry.type == "half disc" &&
                   scene.friction.law == "coulomb",
                 ExcMessage("step-4 needs the 2D half disc with Coulomb "
                            "friction."));

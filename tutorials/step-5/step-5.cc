@@ -589,7 +589,7 @@ namespace Step5
                              Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                                0);
     AssertThrow(scene.geometry.dimension == 2 &&
-                  scene.geometry.type == GeometryType::half_disc,
+                  scene.geometry.type == "half disc",
                 ExcMessage("step-5 compares with plane-strain Hertz: it "
                            "needs the 2D half disc (<Geometry/Type>)"));
     const tutorial::Hertz hertz(scene, measured_load(scene));

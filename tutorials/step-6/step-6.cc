@@ -413,7 +413,7 @@ namespace Step6
   CylinderObstacle::check_scene() const
   {
     AssertThrow(parameters.geometry.dimension == 2 &&
-                  parameters.geometry.type == GeometryType::mesh_file &&
+                  parameters.geometry.type == "mesh file" &&
                   parameters.obstacle.type == "cylinder" &&
                   parameters.friction.law == "none",
                 ExcMessage("step-6 needs a 2D scene on a mesh file with a "

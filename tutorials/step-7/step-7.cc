@@ -314,7 +314,7 @@ namespace Step7
   HalfBall::check_scene() const
   {
     AssertThrow(parameters.geometry.dimension == 3 &&
-                  parameters.geometry.type == GeometryType::half_disc &&
+                  parameters.geometry.type == "half disc" &&
                   parameters.friction.law == "coulomb",
                 ExcMessage("step-7 needs the 3D half ball with Coulomb "
                            "friction"));

@@ -359,7 +359,7 @@ namespace Step8
     const std::vector<types::boundary_id> clamps =
       scene.boundary.ids_with(BoundaryCondition::fixed);
     tutorial::require(scene.geometry.dimension == dim &&
-                        scene.geometry.type == GeometryType::half_disc &&
+                        scene.geometry.type == "half disc" &&
                         scene.friction.law == "coulomb" && clamps.size() == 1,
                       "step-8 needs the 2D half disc with Coulomb friction "
                       "and one clamped boundary part (<Boundary "

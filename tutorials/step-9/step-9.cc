@@ -258,8 +258,7 @@ namespace Step9
   DegreeStudy::check_scene()
   {
     tutorial::require(
-      scene.geometry.dimension == dim &&
-        scene.geometry.type == GeometryType::half_disc &&
+      scene.geometry.dimension == dim && scene.geometry.type == "half disc" &&
         scene.friction.law == "none" && scene.refinement.strategy == "global" &&
         n_cycles >= 2,
       "step-9 compares the rates of frictionless plane-strain "
