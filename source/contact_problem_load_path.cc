@@ -147,7 +147,7 @@ namespace dualcontact
   {
     make_constraints(scene.effects().contact && contact_set.has_pairs());
     if (scene.effects().contact)
-      contact_set.place_obstacle(scene, mpi_communicator);
+      contact_set.place_obstacle(scene.obstacle(), mpi_communicator);
   }
 
   template <int dim>

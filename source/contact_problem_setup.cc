@@ -22,6 +22,27 @@
 
 namespace dualcontact
 {
+  namespace
+  {
+    // What the contact set reads of the scene: the contact ids, the pairs,
+    // the obstacle, the friction and the body's size and centre.
+    template <int dim>
+    ContactSetup<dim>
+    contact_setup(const Scene<dim> &scene)
+    {
+      ContactSetup<dim> input;
+      input.contact_ids           = scene.contact_ids();
+      input.pairs                 = scene.contact_pairs();
+      input.node_to_segment       = scene.pairs_node_to_segment();
+      input.obstacle              = &scene.obstacle();
+      input.friction_law          = &scene.effects().friction_law();
+      input.friction_parameter    = scene.friction_function();
+      input.characteristic_length = scene.characteristic_length();
+      input.center                = scene.center();
+      return input;
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactProblem<dim>::make_grid()
@@ -38,19 +59,13 @@ namespace dualcontact
     });
     size.check(triangulation.n_global_active_cells(), true);
     size.warn(triangulation.n_global_active_cells());
-    // a mapping of degree k follows the manifolds: a mesh file without them
-    // stays the polygon of its vertices
-    const GeometryParameters &geometry = parameters.geometry;
-    if (parameters.discretization.degree > 1 && geometry.type == "mesh file" &&
-        geometry.manifolds.empty() &&
+    // a mapping of degree k follows the boundary where the shape names
+    // its curved parts
+    const std::string warning =
+      scene.geometry().mapping_warning(parameters.discretization.degree);
+    if (!warning.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::cerr << "dualcontact: warning: <Geometry/Manifolds> is empty: the "
-                   "boundary of the mesh file stays the polygon of its "
-                   "faces at <Discretization/Polynomial degree> "
-                << parameters.discretization.degree
-                << " as at 1; name its curved parts there for the mapping to "
-                   "follow them."
-                << std::endl;
+      std::cerr << "dualcontact: warning: " << warning << std::endl;
     scene.check_rigid_motions(triangulation);
     check_initial_position(triangulation, scene);
     // a checkpoint keeps the mesh as p4est's forest

@@ -7,7 +7,6 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/discretization.h>
 #include <dualcontact/input_error.h>
-#include <dualcontact/scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,22 +16,6 @@
 
 namespace dualcontact
 {
-  template <int dim>
-  ContactSetup<dim>
-  contact_setup(const Scene<dim> &scene)
-  {
-    ContactSetup<dim> input;
-    input.contact_ids           = scene.contact_ids();
-    input.pairs                 = scene.contact_pairs();
-    input.node_to_segment       = scene.pairs_node_to_segment();
-    input.obstacle              = &scene.obstacle();
-    input.friction_law          = &scene.effects().friction_law();
-    input.friction_parameter    = scene.friction_function();
-    input.characteristic_length = scene.characteristic_length();
-    input.center                = scene.center();
-    return input;
-  }
-
   template <int dim>
   void
   ContactSet<dim>::setup(
@@ -323,13 +306,6 @@ namespace dualcontact
 
   template <int dim>
   void
-  ContactSet<dim>::place_obstacle(const Scene<dim> &scene, const MPI_Comm comm)
-  {
-    place_obstacle(scene.obstacle(), comm);
-  }
-
-  template <int dim>
-  void
   ContactSet<dim>::set_slip_origin(const TrilinosWrappers::MPI::Vector &u,
                                    const Tensor<1, dim> &obstacle_step)
   {
@@ -489,10 +465,6 @@ namespace dualcontact
     return dofs;
   }
 
-  template ContactSetup<2>
-  contact_setup(const Scene<2> &);
-  template ContactSetup<3>
-  contact_setup(const Scene<3> &);
 
   template class ContactSet<2>;
   template class ContactSet<3>;

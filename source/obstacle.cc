@@ -2,6 +2,7 @@
 
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
 #include <dualcontact/registry.h>
 
 #include <algorithm>
@@ -113,22 +114,25 @@ namespace dualcontact
 
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
-  create_obstacle(const Parameters &parameters, const double length)
+  create_obstacle(const std::string        &type,
+                  const EntryValues        &values,
+                  const MaterialParameters &material,
+                  const double              length)
   {
-    const ObstacleKind &kind = obstacle_kind(parameters.obstacle.type);
+    const ObstacleKind &kind = obstacle_kind(type);
     if constexpr (dim == 2)
-      return kind.create_2d(parameters.obstacle.values, parameters, length);
+      return kind.create_2d(values, material, length);
     else
-      return kind.create_3d(parameters.obstacle.values, parameters, length);
+      return kind.create_3d(values, material, length);
   }
 
   std::string
-  obstacle_entries_text(const Parameters &parameters)
+  obstacle_entries_text(const std::string &type, const unsigned int dim)
   {
-    const ObstacleKind      &kind = obstacle_kind(parameters.obstacle.type);
+    const ObstacleKind      &kind = obstacle_kind(type);
     std::vector<std::string> entries;
     if (kind.entries != nullptr)
-      entries = kind.entries(parameters.geometry.dimension);
+      entries = kind.entries(dim);
     return listed(entries, "<", ">");
   }
 
@@ -154,9 +158,15 @@ namespace dualcontact
   }
 
   template std::unique_ptr<Obstacle<2>>
-  create_obstacle(const Parameters &, double);
+  create_obstacle(const std::string &,
+                  const EntryValues &,
+                  const MaterialParameters &,
+                  double);
   template std::unique_ptr<Obstacle<3>>
-  create_obstacle(const Parameters &, double);
+  create_obstacle(const std::string &,
+                  const EntryValues &,
+                  const MaterialParameters &,
+                  double);
   template std::array<Tensor<1, 2>, 1>
   tangent_basis(const Tensor<1, 2> &);
   template std::array<Tensor<1, 3>, 2>

@@ -164,11 +164,14 @@ namespace dualcontact
       path += (path.empty() ? "" : "; ") + component;
     if (!path.empty())
       obstacle_path = make_obstacle_path<dim>(path, times, length);
-    obstacle_ =
-      std::make_unique<PlacedObstacle<dim>>(create_obstacle<dim>(parameters,
-                                                                 length),
-                                            Tensor<1, dim>(),
-                                            obstacle_entries_text(parameters));
+    obstacle_ = std::make_unique<PlacedObstacle<dim>>(
+      create_obstacle<dim>(parameters.obstacle.type,
+                           parameters.obstacle.values,
+                           parameters.material,
+                           length),
+      Tensor<1, dim>(),
+      obstacle_entries_text(parameters.obstacle.type,
+                            parameters.geometry.dimension));
     set_time(times.front());
 
     return path;

@@ -32,14 +32,10 @@ namespace dualcontact
 {
   using namespace dealii;
 
-  template <int dim>
-  class Scene;
-
   /**
-   * What ContactSet::setup() reads of a scene (contact_setup() takes it
-   * from one): the ids whose faces carry contact nodes, the contact pairs,
-   * the obstacle, the friction law and its parameter, and the body's
-   * size and centre.
+   * What ContactSet::setup() reads of a scene: the ids whose faces carry
+   * contact nodes, the contact pairs, the obstacle, the friction law and its
+   * parameter, and the body's size and centre.
    */
   template <int dim>
   struct ContactSetup
@@ -60,11 +56,6 @@ namespace dualcontact
     // taken at it
     Point<dim> center;
   };
-
-  /** The ContactSetup of a scene. */
-  template <int dim>
-  ContactSetup<dim>
-  contact_setup(const Scene<dim> &scene);
 
   /**
    * The contact nodes owned by this rank, and the multipliers on them.
@@ -240,9 +231,6 @@ namespace dualcontact
     void
     place_obstacle(const PlacedObstacle<dim> &obstacle, MPI_Comm comm);
 
-    /** place_obstacle() for the obstacle of `scene`. */
-    void
-    place_obstacle(const Scene<dim> &scene, MPI_Comm comm);
 
     /**
      * At every local node the arguments of the positive part and of the

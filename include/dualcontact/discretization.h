@@ -17,7 +17,7 @@
 
 #include <deal.II/grid/reference_cell.h>
 
-#include <dualcontact/parameters.h>
+#include <dualcontact/cell_kind.h>
 
 #include <memory>
 #include <string>
@@ -27,7 +27,7 @@ namespace dualcontact
   using namespace dealii;
 
   /**
-   * The empty triangulation of the kind (CellKind, parameters.h), on the
+   * The empty triangulation of the kind (CellKind, cell_kind.h), on the
    * communicator. Quadrilaterals (hexahedra in 3D): a
    * parallel::distributed::Triangulation (p4est: each rank holds its own
    * cells and a layer of ghosts). Simplices: a
@@ -116,7 +116,7 @@ namespace dualcontact
 
   /**
    * The cells of a scene and its element: every question whose answer
-   * depends on the cell kind (CellKind, parameters.h), answered for the
+   * depends on the cell kind (CellKind, cell_kind.h), answered for the
    * kind and the polynomial degree it is built with.
    */
   template <int dim>

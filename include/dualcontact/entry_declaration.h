@@ -32,6 +32,12 @@
 namespace dualcontact
 {
   /**
+   * The entries a plugin (an obstacle kind, a refinement indicator) reads,
+   * as the scene gives them: "Subsection/Entry" -> value.
+   */
+  using EntryValues = std::map<std::string, std::string>;
+
+  /**
    * What an entry accepts: the deal.II pattern that checks a value, and the
    * same in words, singular ("a number >= 0") and plural ("numbers >= 0",
    * for the items of a list). Bounds are inclusive; a bound left at its

@@ -7,7 +7,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/function_parser.h>
 
-#include <dualcontact/parameters.h>
+#include <dualcontact/material_parameters.h>
 
 #include <memory>
 #include <string>

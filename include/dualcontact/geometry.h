@@ -65,6 +65,17 @@ namespace dualcontact
     /** A length that characterises the body (for relative measures). */
     virtual double
     characteristic_length() const = 0;
+
+    /**
+     * A warning for a mapping of polynomial degree `degree` that cannot
+     * follow the boundary (a shape whose curved parts are not named), or
+     * the empty string.
+     */
+    virtual std::string
+    mapping_warning(const unsigned int /*degree*/) const
+    {
+      return "";
+    }
   };
 
   /**

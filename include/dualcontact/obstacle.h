@@ -8,7 +8,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <dualcontact/parameters.h>
+#include <dualcontact/entry_declaration.h>
+#include <dualcontact/material_parameters.h>
 
 #include <array>
 #include <functional>
@@ -157,10 +158,10 @@ namespace dualcontact
   };
 
   template <int dim>
-  using ObstacleFactory =
-    std::function<std::unique_ptr<Obstacle<dim>>(const EntryValues &values,
-                                                 const Parameters  &parameters,
-                                                 const double       length)>;
+  using ObstacleFactory = std::function<
+    std::unique_ptr<Obstacle<dim>>(const EntryValues        &values,
+                                   const MaterialParameters &material,
+                                   const double              length)>;
 
   /**
    * What a kind of obstacle registers from its own file: the help text of
@@ -240,14 +241,17 @@ namespace dualcontact
    */
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
-  create_obstacle(const Parameters &parameters, const double length);
+  create_obstacle(const std::string        &type,
+                  const EntryValues        &values,
+                  const MaterialParameters &material,
+                  const double              length);
 
   /**
    * The entries that place the obstacle of the scene, for messages:
    * "<Foundation/Point> and <Foundation/Normal>".
    */
   std::string
-  obstacle_entries_text(const Parameters &parameters);
+  obstacle_entries_text(const std::string &type, const unsigned int dim);
 
   /**
    * The point (or vector) of a list of coordinates from a parameter entry;

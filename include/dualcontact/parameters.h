@@ -9,7 +9,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <dualcontact/cell_kind.h>
 #include <dualcontact/entry_declaration.h>
+#include <dualcontact/material_parameters.h>
 #include <dualcontact/name_table.h>
 
 #include <map>
@@ -24,22 +26,6 @@ namespace dualcontact
 
   class ParameterReader;
   struct Parameters;
-
-  /**
-   * The entries a plugin (an obstacle kind, a refinement indicator) reads,
-   * as the scene gives them: "Subsection/Entry" -> value.
-   */
-  using EntryValues = std::map<std::string, std::string>;
-
-  /**
-   * Quadrilaterals (hexahedra in 3D) with FE_Q(k), or simplices, triangles
-   * (tetrahedra) with FE_SimplexP(k): <Geometry/Cell type> (discretization.h).
-   */
-  enum class CellKind
-  {
-    quadrilateral,
-    simplex
-  };
 
   /** The condition on one part of the boundary (doc/theory.md §1). */
   enum class BoundaryCondition
@@ -169,73 +155,6 @@ namespace dualcontact
     check_simplices(const Parameters &parameters, const std::string &why);
     std::vector<IneffectiveRule>
     ineffective_rules(const Parameters &parameters) const;
-  };
-
-  /** Isotropic linear elasticity; plane strain in 2D. */
-  struct MaterialParameters
-  {
-    double youngs_modulus = 1.;
-    double poissons_ratio = 0.3;
-    // <Material/Materials by id>: the bodies of other materials, material
-    // id -> (E, nu); the cells of every other id take the two above
-    std::map<dealii::types::material_id, std::pair<double, double>> by_id;
-
-    double
-    lambda() const;
-    double
-    mu() const;
-    /** The P-wave modulus lambda + 2 mu. */
-    double
-    p_wave_modulus() const
-    {
-      return lambda() + 2. * mu();
-    }
-
-    /** The material of the cells with material id `id`. */
-    MaterialParameters
-    of(const dealii::types::material_id id) const
-    {
-      MaterialParameters material;
-      const auto         it = by_id.find(id);
-      material.youngs_modulus =
-        it == by_id.end() ? youngs_modulus : it->second.first;
-      material.poissons_ratio =
-        it == by_id.end() ? poissons_ratio : it->second.second;
-      return material;
-    }
-
-    /**
-     * Whether cells of material id `id` have a material: every id does
-     * while <Material/Materials by id> is empty; once it lists some, the
-     * ids listed and 0, which takes <Young's modulus> and <Poisson's ratio>.
-     */
-    bool
-    has(const dealii::types::material_id id) const
-    {
-      return by_id.empty() || id == 0 || by_id.count(id) > 0;
-    }
-
-    /**
-     * The stiffest of the materials (the largest P-wave modulus): the
-     * contact solver scales its augmentation with it.
-     */
-    MaterialParameters
-    stiffest() const
-    {
-      MaterialParameters result = of(dealii::numbers::invalid_material_id);
-      for (const auto &[id, values] : by_id)
-        if (of(id).p_wave_modulus() > result.p_wave_modulus())
-          result = of(id);
-      return result;
-    }
-
-    static void
-    declare_parameters(EntryDeclarer &declarer);
-    void
-    parse_parameters(ParameterHandler &prm);
-    /** E within the magnitudes the solver represents (exit 5). */
-    void
-    check_magnitudes() const;
   };
 
   /** Which condition holds on which boundary id, with its data. */

@@ -26,6 +26,7 @@
 
 #include <dualcontact/contact_set.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/refinement_indicator_kind.h>
 
 #include <functional>
 #include <set>
@@ -53,59 +54,6 @@ namespace dualcontact
     // the hanging nodes filled (ContactSet::write_fields); computed on call
     std::function<TrilinosWrappers::MPI::Vector()> multipliers;
   };
-
-  /**
-   * One value per active cell (those of the cells not owned are not read);
-   * the largest are refined.
-   */
-  template <int dim>
-  using IndicatorFunction =
-    std::function<Vector<float>(const IndicatorInput<dim> &input)>;
-
-  /** What a refinement indicator registers from its own file. */
-  struct RefinementIndicatorKind
-  {
-    /** What <Refinement/Strategy> = this name does: a sentence or two. */
-    std::string help;
-
-    /**
-     * Declares its own entries (in subsection Refinement) through
-     * `declarer` (entry_declaration.h), or nullptr.
-     */
-    void (*declare_parameters)(EntryDeclarer &declarer) = nullptr;
-
-    /** Its own entries, "Refinement/Entry". */
-    std::vector<std::string> entries;
-
-    /**
-     * The indicator. Empty functions: every cell is refined (then the
-     * fractions have no effect).
-     */
-    IndicatorFunction<2> indicator_2d;
-    IndicatorFunction<3> indicator_3d;
-
-    bool
-    refines_every_cell() const
-    {
-      return !indicator_2d;
-    }
-  };
-
-  /**
-   * Make `name` known to <Refinement/Strategy>. Called once per kind, at
-   * load time. Returns true (for the static initialiser).
-   */
-  bool
-  register_refinement_indicator(const std::string      &name,
-                                RefinementIndicatorKind kind);
-
-  /** The registered names, in alphabetical order. */
-  std::vector<std::string>
-  refinement_indicator_names();
-
-  /** The kind registered as `name`; InputError naming the entry. */
-  const RefinementIndicatorKind &
-  refinement_indicator_kind(const std::string &name);
 
   /** The indicator of the scene's <Refinement/Strategy>. */
   template <int dim>

@@ -137,6 +137,13 @@ namespace dualcontact
       return discretization_->cell_kind();
     }
 
+    /** The body's shape (<Geometry/Type>). */
+    const Geometry<dim> &
+    geometry() const
+    {
+      return *geometry_;
+    }
+
     /** The element, mapping, quadratures and triangulation of the cells. */
     const Discretization<dim> &
     discretization() const

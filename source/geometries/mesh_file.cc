@@ -181,6 +181,23 @@ namespace dualcontact
         return length;
       }
 
+      /**
+       * A mapping of degree k follows the manifolds: without them the
+       * boundary stays the polygon of the file's faces.
+       */
+      std::string
+      mapping_warning(const unsigned int degree) const override
+      {
+        if (degree <= 1 || !g.manifolds.empty())
+          return "";
+        return "<Geometry/Manifolds> is empty: the boundary of the mesh file "
+               "stays the polygon of its faces at <Discretization/Polynomial "
+               "degree> " +
+               std::to_string(degree) +
+               " as at 1; name its curved parts there for the mapping to "
+               "follow them.";
+      }
+
     private:
       const GeometryParameters &g;
       Triangulation<dim>        coarse_mesh;

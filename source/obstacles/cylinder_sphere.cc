@@ -131,7 +131,7 @@ namespace dualcontact
 
     template <int dim, bool cylinder>
     std::unique_ptr<Obstacle<dim>>
-    make(const EntryValues &values, const Parameters &, const double)
+    make(const EntryValues &values, const MaterialParameters &, const double)
     {
       return std::make_unique<Round<dim>>(values, cylinder);
     }

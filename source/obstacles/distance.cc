@@ -5,9 +5,9 @@
 // set reports the node as unusable.
 #include <deal.II/base/parameter_handler.h>
 
+#include <dualcontact/expressions.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
-#include <dualcontact/scene.h>
 
 #include <cmath>
 
@@ -19,13 +19,13 @@ namespace dualcontact
     class SignedDistance : public Obstacle<dim>
     {
     public:
-      SignedDistance(const EntryValues &values,
-                     const Parameters  &parameters,
-                     const double       length)
+      SignedDistance(const EntryValues        &values,
+                     const MaterialParameters &material,
+                     const double              length)
           : expression(values.at("Obstacle/Distance"))
           , function(make_function<dim>(expression,
                                         1,
-                                        parameters.material,
+                                        material,
                                         "Obstacle/Distance",
                                         length))
           , step(1e-6 * length)
@@ -145,11 +145,11 @@ namespace dualcontact
 
     template <int dim>
     std::unique_ptr<Obstacle<dim>>
-    make(const EntryValues &values,
-         const Parameters  &parameters,
-         const double       length)
+    make(const EntryValues        &values,
+         const MaterialParameters &material,
+         const double              length)
     {
-      return std::make_unique<SignedDistance<dim>>(values, parameters, length);
+      return std::make_unique<SignedDistance<dim>>(values, material, length);
     }
 
     const bool registered = register_obstacle(

@@ -98,7 +98,7 @@ namespace dualcontact
 
     template <int dim>
     std::unique_ptr<Obstacle<dim>>
-    make(const EntryValues &values, const Parameters &, const double)
+    make(const EntryValues &values, const MaterialParameters &, const double)
     {
       return std::make_unique<Plane<dim>>(values);
     }

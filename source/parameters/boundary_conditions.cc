@@ -184,7 +184,6 @@ namespace dualcontact
   // the stages of check(), after it
   static void
   check_contact_pairs(const BoundaryParameters &boundary,
-                      const GeometryParameters &geometry,
                       const unsigned int        n_ids,
                       const std::string        &shape);
   static void
@@ -230,7 +229,7 @@ namespace dualcontact
                        "<Discretization/Polynomial degree> to 1, or the "
                        "coupling to dual mortar.",
                        exit_inconsistent);
-    check_contact_pairs(*this, geometry, n_ids, shape);
+    check_contact_pairs(*this, n_ids, shape);
     check_boundary_data(*this);
   }
 
@@ -241,7 +240,6 @@ namespace dualcontact
    */
   static void
   check_contact_pairs(const BoundaryParameters &boundary,
-                      const GeometryParameters &geometry,
                       const unsigned int        n_ids,
                       const std::string        &shape)
   {

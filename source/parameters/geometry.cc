@@ -5,7 +5,7 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameter_helpers.h>
 #include <dualcontact/parameters.h>
-#include <dualcontact/refinement_indicator.h>
+#include <dualcontact/refinement_indicator_kind.h>
 
 #include <algorithm>
 #include <cmath>

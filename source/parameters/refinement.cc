@@ -1,12 +1,12 @@
 // <Refinement>: the sequence of meshes; the strategy is a refinement
-// indicator registered in refinement_indicator.h, whose file declares the
+// indicator registered in refinement_indicator_kind.h, whose file declares the
 // indicator's own entries.
 #include <deal.II/base/utilities.h>
 
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameter_helpers.h>
 #include <dualcontact/parameters.h>
-#include <dualcontact/refinement_indicator.h>
+#include <dualcontact/refinement_indicator_kind.h>
 
 #include <algorithm>
 #include <map>

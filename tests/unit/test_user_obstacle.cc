@@ -99,7 +99,7 @@ namespace
 
   template <int dim>
   std::unique_ptr<Obstacle<dim>>
-  make(const EntryValues &values, const Parameters &, const double)
+  make(const EntryValues &values, const MaterialParameters &, const double)
   {
     return std::make_unique<Floor<dim>>(
       numbers_of(values, "Obstacle/Floor height").at(0));

@@ -512,9 +512,7 @@ namespace Step1
     // Its contact zone 0 <= x <= a stops at the point where the contact
     // begins: measure_contact_zone() takes it for a model cut by a plane of
     // symmetry and measures the whole zone, mirrored across x = 0.
-    const double factor =
-      parameters.geometry.type == "quarter disc" ? 2. : 1.;
-    symmetry = factor;
+    symmetry = parameters.geometry.type == "quarter disc" ? 2. : 1.;
   }
 
 
