@@ -236,7 +236,8 @@ namespace dualcontact
     unsigned int no_normal = 0, corners = 0;
     for (auto &node : nodes)
       {
-        // a paired node's gap and normal are the pair's (couple_pairs())
+        // a paired node's gap and normal are the pair's
+        // (ContactPairs::couple())
         if (!node.masters.empty())
           continue;
         node.gap0                            = obstacle.distance(node.position);
