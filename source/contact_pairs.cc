@@ -88,7 +88,7 @@ namespace dualcontact
       const AffineConstraints<double> &constraints;
       const MPI_Comm                   comm;
       const unsigned int               n_face_nodes;
-      const std::vector<unsigned int>  body_of_coarse_cell;
+      const Bodies<dim>                bodies;
     };
 
     template <int dim>
@@ -114,7 +114,7 @@ namespace dualcontact
               constraints,
               dof_handler.get_triangulation().get_communicator(),
               n_face_nodes,
-              bodies_of_coarse_cells(dof_handler.get_triangulation())};
+              Bodies<dim>(dof_handler.get_triangulation())};
     }
 
     // The two surfaces of a pair: the master surface, whole on every rank;
@@ -142,7 +142,7 @@ namespace dualcontact
                                            mesh.dof_handler,
                                            mesh.hanging,
                                            master_id,
-                                           mesh.body_of_coarse_cell,
+                                           mesh.bodies,
                                            /*owned_only=*/true,
                                            /*with_parents=*/true),
                       mesh.n_face_nodes,
@@ -152,7 +152,7 @@ namespace dualcontact
                                             mesh.dof_handler,
                                             mesh.hanging,
                                             slave_id,
-                                            mesh.body_of_coarse_cell,
+                                            mesh.bodies,
                                             /*owned_only=*/false,
                                             /*with_parents=*/false);
       const auto &master_faces = surfaces.master;
@@ -652,11 +652,11 @@ namespace dualcontact
 
   template <int dim>
   IndexSet
-  ContactPairs<dim>::coupled_rows(
-    const AffineConstraints<double>     &constraints,
-    const std::vector<ContactNode<dim>> &nodes) const
+  ContactPairs<dim>::coupled_rows(const AffineConstraints<double> &constraints,
+                                  const std::vector<ContactNode<dim>> &nodes,
+                                  const types::global_dof_index n_dofs) const
   {
-    IndexSet rows(ghosted.size());
+    IndexSet rows(n_dofs);
     for (const ContactNode<dim> &node : nodes)
       if (!node.masters.empty())
         for (const types::global_dof_index row :

@@ -23,6 +23,7 @@
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/output_directory.h>
+#include <dualcontact/pair_results.h>
 #include <dualcontact/plausibility.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/refinement.h>
@@ -40,37 +41,6 @@ namespace dualcontact
 {
   namespace
   {
-    /**
-     * The force on the slave nodes of the contact pair of `slave_id`, and
-     * the direction it is measured along: the resultant of its normal
-     * forces sum_s m_s l1_s n_s, without pressure the mean normal of its
-     * slave nodes.
-     */
-    template <int dim>
-    std::pair<Tensor<1, dim>, Tensor<1, dim>>
-    pair_force_and_direction(const ContactSet<dim>   &contact_set,
-                             const types::boundary_id slave_id,
-                             const MPI_Comm           mpi_communicator)
-    {
-      Tensor<1, dim> force, pressed, facing;
-      for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
-        if (contact_set.nodes[s].pair_slave_id == slave_id)
-          {
-            const ContactNode<dim> &node = contact_set.nodes[s];
-            force += contact_set.nodal_force(s);
-            pressed += node.weight * contact_set.l1[s] * node.normal;
-            facing += node.weight * node.normal;
-          }
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          force[c]   = Utilities::MPI::sum(force[c], mpi_communicator);
-          pressed[c] = Utilities::MPI::sum(pressed[c], mpi_communicator);
-          facing[c]  = Utilities::MPI::sum(facing[c], mpi_communicator);
-        }
-      const Tensor<1, dim> direction = pressed.norm() > 0. ? pressed : facing;
-      return {force, direction};
-    }
-
     /**
      * The half-width (2D) or radius (3D) of the contact zone and of its
      * stick zone, from the nodes of every rank.
@@ -123,21 +93,9 @@ namespace dualcontact
     TimerOutput::Scope    t(computing_timer, "measure contact zone");
     ContactZoneRecord     record;
     double                peak = 0;
-    Tensor<1, dim>        on_obstacle, on_slave, on_master;
     std::vector<ZoneNode> local;
     for (unsigned int s = 0; s < contact_set.n_local_nodes(); ++s)
       {
-        // a pair's node pushes the master body, which pushes it back: a
-        // force inside the mesh, no load on it
-        const Tensor<1, dim> force = contact_set.nodal_force(s);
-        if (contact_set.nodes[s].masters.empty())
-          on_obstacle += force;
-        else
-          {
-            on_slave -= force;
-            for (const MasterTerm<dim> &master : contact_set.nodes[s].masters)
-              on_master += master.coefficient * force;
-          }
         peak = std::max(peak, contact_set.l1[s]);
         ZoneNode node;
         for (unsigned int k = 0; k < dim - 1; ++k)
@@ -148,53 +106,8 @@ namespace dualcontact
         node.status = contact_set.status(s);
         local.push_back(node);
       }
-    for (unsigned int c = 0; c < dim; ++c)
-      {
-        on_obstacle[c] = Utilities::MPI::sum(on_obstacle[c], mpi_communicator);
-        on_slave[c]    = Utilities::MPI::sum(on_slave[c], mpi_communicator);
-        on_master[c]   = Utilities::MPI::sum(on_master[c], mpi_communicator);
-        record.on_slave_body[c]  = on_slave[c];
-        record.on_master_body[c] = on_master[c];
-      }
-    // the obstacle's force is the resultant's component along the mean
-    // direction of its nodes, the direction of the applied load it
-    // balances: a sum of the pressures m_s l1_s would also count the parts
-    // of the normals that cancel (a curved zone), or that point elsewhere
-    // (a node beside an obstacle's corner). Each pair's the same along its
-    // own direction, the resultant of its normal forces sum_s m_s l1_s n_s
-    // (without pressure the mean normal of its slave nodes): pairs that
-    // face other ways (a stack on the plane whose pair's slave is the lower
-    // body's top) must not cancel.
-    record.obstacle_force = on_obstacle * contact_set.normal;
-    record.contact_force  = record.obstacle_force;
-    // the tangential forces likewise: each contact's in the plane normal to
-    // its own direction, their magnitudes summed (the sum of the vectors
-    // would depend on which side of a pair is the slave: in a stack on the
-    // plane the pair's force on the slave is the upper load's, or its
-    // opposite)
-    const auto tangential = [](const Tensor<1, dim> &force,
-                               const Tensor<1, dim> &direction) {
-      return direction.norm() > 0. ? (force - (force * direction) * direction /
-                                                direction.norm_square())
-                                       .norm() :
-                                     force.norm();
-    };
-    record.tangential_force = tangential(on_obstacle, contact_set.normal);
-    for (const auto &[slave_id, master_id] : scene.contact_pairs())
-      {
-        const auto [force, direction] =
-          pair_force_and_direction(contact_set, slave_id, mpi_communicator);
-        const double pair_force =
-          direction.norm() > 0. ? force * direction / direction.norm() : 0.;
-        record.pair_force.push_back(pair_force);
-        record.contact_force += pair_force;
-        record.tangential_force += tangential(force, direction);
-      }
-    // the force of the obstacle on the body, -sum_s m_s (l1_s n_s + T_s l2_s)
-    const Tensor<1, dim> resultant = -on_obstacle;
+    add_contact_forces(contact_set, mpi_communicator, record);
     record.max_pressure = Utilities::MPI::max(peak, mpi_communicator);
-    for (unsigned int c = 0; c < dim; ++c)
-      record.resultant[c] = resultant[c];
 
     // the half-width (2D) or radius (3D) of the zone and of its stick zone
     measure_zone_shape(local, contact_set, mpi_communicator, record);

@@ -23,6 +23,7 @@
 #include <dualcontact/contact_problem.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/output_directory.h>
+#include <dualcontact/pair_results.h>
 #include <dualcontact/plausibility.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/refinement.h>
@@ -37,40 +38,6 @@
 
 namespace dualcontact
 {
-  namespace
-  {
-    /**
-     * The contact nodes' rows in contact<suffix>, and each contact pair's
-     * rows alone, in a file named by its ids.
-     */
-    template <int dim>
-    void
-    write_contact_rows(const std::string                      &directory,
-                       const std::string                      &suffix,
-                       const std::vector<ContactNodeRow<dim>> &rows,
-                       const ContactSet<dim>                  &contact_set,
-                       const Scene<dim>                       &scene)
-    {
-      write_contact_csv(directory + "/contact" + suffix,
-                        rows,
-                        contact_set.law->has_friction(),
-                        scene.exact_pressure());
-      for (const auto &[slave, master] : scene.contact_pairs())
-        {
-          std::vector<ContactNodeRow<dim>> pair_rows;
-          for (const ContactNodeRow<dim> &row : rows)
-            if (row.pair_slave_id == static_cast<int>(slave))
-              pair_rows.push_back(row);
-          write_contact_csv(directory + "/contact_pair_" +
-                              std::to_string(slave) + "_" +
-                              std::to_string(master) + suffix,
-                            pair_rows,
-                            contact_set.law->has_friction(),
-                            scene.exact_pressure());
-        }
-    }
-  } // namespace
-
   template <int dim>
   void
   ContactProblem<dim>::output_results(const unsigned int cycle)
@@ -132,7 +99,8 @@ namespace dualcontact
         const std::string suffix =
           tag + "_" + Utilities::int_to_string(number, digits) + ".csv";
         if (root)
-          write_contact_rows(directory, suffix, rows, contact_set, scene);
+          write_contact_csvs(
+            directory, suffix, rows, contact_set, scene.exact_pressure());
       }
 
     if (!parameters.output.write_vtu)

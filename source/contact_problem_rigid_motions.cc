@@ -298,27 +298,6 @@ namespace dualcontact
   } // namespace
 
   template <int dim>
-  TrilinosWrappers::MPI::Vector
-  ContactProblem<dim>::bodies_of_dofs(
-    const std::vector<unsigned int> &body_of_coarse_cell) const
-  {
-    TrilinosWrappers::MPI::Vector        body_plus_one(locally_owned_dofs,
-                                                mpi_communicator);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const unsigned int body = body_of<dim>(cell, body_of_coarse_cell);
-          cell->get_dof_indices(dofs);
-          for (const types::global_dof_index dof : dofs)
-            if (locally_owned_dofs.is_element(dof))
-              body_plus_one[dof] = body + 1.;
-        }
-    body_plus_one.compress(VectorOperation::insert);
-    return body_plus_one;
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::find_free_motions()
   {
@@ -331,24 +310,20 @@ namespace dualcontact
     // contact pushes along n_s only), whole with friction (which holds
     // the tangential motions too, also where a body near its sliding
     // limit slips). A combination is free iff c^T (G_D + G_C) c = 0.
-    const std::vector<unsigned int> body_of_coarse_cell =
-      bodies_of_coarse_cells(triangulation);
-    const unsigned int n_bodies =
-      1 +
-      *std::max_element(body_of_coarse_cell.begin(), body_of_coarse_cell.end());
+    const Bodies<dim>        bodies(triangulation);
     double                   measure = 0.;
     const FullMatrix<double> gram =
-      scene.rigid_motion_gram(triangulation, measure, &body_of_coarse_cell);
+      scene.rigid_motion_gram(triangulation, measure, &bodies);
 
     // the motions as vectors of nodal values
     const TrilinosWrappers::MPI::Vector body_plus_one =
-      bodies_of_dofs(body_of_coarse_cell);
+      bodies.of_dofs_plus_one(dof_handler);
     const std::vector<TrilinosWrappers::MPI::Vector> motions =
       rigid_motions_of_bodies(mapping,
                               dof_handler,
                               scene,
                               body_plus_one,
-                              n_bodies,
+                              bodies.size(),
                               locally_owned_dofs,
                               mpi_communicator);
 
@@ -368,7 +343,7 @@ namespace dualcontact
       unsupported_combinations(gram, support_measure);
     const std::vector<std::pair<Vector<double>, bool>> free_combinations =
       free_combinations_of(
-        unsupported, contact_held, contact_moved, measure, n_bodies > 1);
+        unsupported, contact_held, contact_moved, measure, bodies.size() > 1);
 
     // each free combination as a vector of the condensed space, improved
     // by one step of inverse iteration with K = A + chi M, then orthonormal
@@ -426,8 +401,4 @@ namespace dualcontact
   ContactProblem<2>::find_free_motions();
   template void
   ContactProblem<3>::find_free_motions();
-  template TrilinosWrappers::MPI::Vector
-  ContactProblem<2>::bodies_of_dofs(const std::vector<unsigned int> &) const;
-  template TrilinosWrappers::MPI::Vector
-  ContactProblem<3>::bodies_of_dofs(const std::vector<unsigned int> &) const;
 } // namespace dualcontact

@@ -129,17 +129,15 @@ namespace dualcontact
     // The elements' couplings, and on a pair those of each slave node with
     // its master nodes, rows of other ranks included: the Newton matrix
     // adds its contact terms there (newton_solver.cc).
-    const bool pairs = scene.effects().contact && contact_set.has_pairs();
-    IndexSet   rows  = locally_relevant_dofs;
-    if (pairs)
-      rows.add_indices(contact_set.coupled_rows(constraints));
+    IndexSet rows = locally_relevant_dofs;
+    rows.add_indices(
+      contact_set.coupled_rows(constraints, dof_handler.n_dofs()));
     DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler,
                                     dsp,
                                     constraints,
                                     /*keep_constrained_dofs=*/false);
-    if (pairs)
-      contact_set.add_pair_couplings(dsp, constraints);
+    contact_set.add_pair_couplings(dsp, constraints);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned_dofs,
                                                mpi_communicator,

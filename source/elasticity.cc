@@ -8,6 +8,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <dualcontact/bodies.h>
 #include <dualcontact/cell_loads.h>
 #include <dualcontact/discretization.h>
 #include <dualcontact/elasticity.h>
@@ -162,10 +163,9 @@ namespace dualcontact
   {
     /**
      * The residual of the unconstrained equations, R = A u - f, plus the
-     * contact forces, the resultant of the loads, and with more than one
-     * body (parts of the mesh that share no vertex) each body's loads and
-     * each owned DoF's body and component, from a locally owned cell that
-     * holds it.
+     * contact forces, the resultant of the loads, each body's loads (bodies.h)
+     * and each owned DoF's body and component, from a locally owned cell
+     * that holds it.
      */
     struct BodyResiduals
     {
@@ -190,12 +190,10 @@ namespace dualcontact
       std::vector<types::global_dof_index> dof_indices(n_dofs);
       BodyResiduals                        result;
       result.residual.reinit(dof_handler.locally_owned_dofs(), comm);
-      Vector<double>                  u(n_dofs), r(n_dofs);
-      const IndexSet                 &owned = dof_handler.locally_owned_dofs();
-      const std::vector<unsigned int> body_of_coarse_cell =
-        bodies_of_coarse_cells(dof_handler.get_triangulation());
-      result.n_bodies = 1 + *std::max_element(body_of_coarse_cell.begin(),
-                                              body_of_coarse_cell.end());
+      Vector<double>    u(n_dofs), r(n_dofs);
+      const IndexSet   &owned = dof_handler.locally_owned_dofs();
+      const Bodies<dim> bodies(dof_handler.get_triangulation());
+      result.n_bodies = bodies.size();
       result.load_on_body.resize(result.n_bodies);
       result.body_of_dof.assign(owned.n_elements(), 0);
       result.component_of_dof.assign(owned.n_elements(), 0);
@@ -209,19 +207,16 @@ namespace dualcontact
             cell->get_dof_indices(dof_indices);
             result.residual.add(dof_indices, r);
             local.add_resultant(result.load);
-            const unsigned int body = body_of<dim>(cell, body_of_coarse_cell);
-            if (result.n_bodies > 1)
-              {
-                local.add_resultant(result.load_on_body[body]);
-                for (unsigned int k = 0; k < n_dofs; ++k)
-                  if (owned.is_element(dof_indices[k]))
-                    {
-                      const auto index = owned.index_within_set(dof_indices[k]);
-                      result.body_of_dof[index] = body;
-                      result.component_of_dof[index] =
-                        dof_handler.get_fe().system_to_component_index(k).first;
-                    }
-              }
+            const unsigned int body = bodies.of(cell);
+            local.add_resultant(result.load_on_body[body]);
+            for (unsigned int k = 0; k < n_dofs; ++k)
+              if (owned.is_element(dof_indices[k]))
+                {
+                  const auto index = owned.index_within_set(dof_indices[k]);
+                  result.body_of_dof[index] = body;
+                  result.component_of_dof[index] =
+                    dof_handler.get_fe().system_to_component_index(k).first;
+                }
           }
       result.residual.compress(VectorOperation::add);
       if (contact_forces != nullptr)
@@ -299,8 +294,9 @@ namespace dualcontact
     }
 
     /**
-     * With more than one body, each body's reaction, load and contact force
-     * (-B^T lambda on its DoFs), summed over the ranks, into `record`.
+     * Each body's reaction, load and contact force (-B^T lambda on its
+     * DoFs), summed over the ranks, into `record`; a scene of one body
+     * balances as a whole (the record's totals), and records none.
      */
     void
     add_body_balances(
@@ -312,29 +308,30 @@ namespace dualcontact
       const unsigned int                        dim,
       const MPI_Comm                            comm)
     {
-      const unsigned int                 n_bodies = residuals.n_bodies;
+      const unsigned int n_bodies = residuals.n_bodies;
+      if (n_bodies == 1)
+        return;
       std::vector<std::array<double, 3>> contact_on_body(n_bodies);
-      if (n_bodies > 1 && contact_forces != nullptr)
+      if (contact_forces != nullptr)
         for (unsigned int k = 0; k < owned.n_elements(); ++k)
           contact_on_body[residuals.body_of_dof[k]]
                          [residuals.component_of_dof[k]] -=
             (*contact_forces)[owned.nth_index_in_set(k)];
-      if (n_bodies > 1)
-        for (unsigned int b = 0; b < n_bodies; ++b)
-          {
-            record.on_body.emplace_back();
-            record.load_on_body.emplace_back();
-            record.contact_on_body.emplace_back();
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                record.on_body[b][c] =
-                  Utilities::MPI::sum(reaction_on_body[b][c], comm);
-                record.load_on_body[b][c] =
-                  Utilities::MPI::sum(residuals.load_on_body[b][c], comm);
-                record.contact_on_body[b][c] =
-                  Utilities::MPI::sum(contact_on_body[b][c], comm);
-              }
-          }
+      for (unsigned int b = 0; b < n_bodies; ++b)
+        {
+          record.on_body.emplace_back();
+          record.load_on_body.emplace_back();
+          record.contact_on_body.emplace_back();
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              record.on_body[b][c] =
+                Utilities::MPI::sum(reaction_on_body[b][c], comm);
+              record.load_on_body[b][c] =
+                Utilities::MPI::sum(residuals.load_on_body[b][c], comm);
+              record.contact_on_body[b][c] =
+                Utilities::MPI::sum(contact_on_body[b][c], comm);
+            }
+        }
     }
   } // namespace
 

@@ -272,7 +272,7 @@ namespace dualcontact
                     const DoFHandler<dim>           &dof_handler,
                     const AffineConstraints<double> &hanging,
                     const types::boundary_id         id,
-                    const std::vector<unsigned int> &body_of_coarse_cell,
+                    const Bodies<dim>               &bodies,
                     const bool                       owned_only,
                     const bool                       with_parents)
       {
@@ -286,7 +286,7 @@ namespace dualcontact
                   cell->face(f)->boundary_id() == id)
                 {
                   SurfaceFace<dim> face;
-                  face.body = body_of<dim>(cell, body_of_coarse_cell);
+                  face.body = bodies.of(cell);
                   cell->get_dof_indices(dof_indices);
                   if constexpr (dim == 3)
                     face_nodes_3d<dim>(mapping, cell, f, dof_indices, face);
@@ -375,17 +375,12 @@ namespace dualcontact
                   const DoFHandler<dim>           &dof_handler,
                   const AffineConstraints<double> &hanging,
                   const types::boundary_id         id,
-                  const std::vector<unsigned int> &body_of_coarse_cell,
+                  const Bodies<dim>               &bodies,
                   const bool                       owned_only,
                   const bool                       with_parents)
     {
-      std::vector<SurfaceFace<dim>> faces = collect_faces(mapping,
-                                                          dof_handler,
-                                                          hanging,
-                                                          id,
-                                                          body_of_coarse_cell,
-                                                          owned_only,
-                                                          with_parents);
+      std::vector<SurfaceFace<dim>> faces = collect_faces(
+        mapping, dof_handler, hanging, id, bodies, owned_only, with_parents);
       hanging_parents(dof_handler, faces);
       return faces;
     }
@@ -618,7 +613,7 @@ namespace dualcontact
                   const DoFHandler<2> &,
                   const AffineConstraints<double> &,
                   types::boundary_id,
-                  const std::vector<unsigned int> &,
+                  const Bodies<2> &,
                   bool,
                   bool);
     template std::vector<SurfaceFace<3>>
@@ -626,7 +621,7 @@ namespace dualcontact
                   const DoFHandler<3> &,
                   const AffineConstraints<double> &,
                   types::boundary_id,
-                  const std::vector<unsigned int> &,
+                  const Bodies<3> &,
                   bool,
                   bool);
     template std::vector<SurfaceFace<2>>

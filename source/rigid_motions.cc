@@ -84,8 +84,8 @@ namespace dualcontact
   bool
   Scene<dim>::translation_is_free(const Tensor<1, dim>     &e,
                                   const Triangulation<dim> &triangulation,
-                                  const std::vector<unsigned int> *bodies,
-                                  const unsigned int               body) const
+                                  const Bodies<dim>        *bodies,
+                                  const unsigned int        body) const
   {
     double     measure = 0;
     const auto gram    = constrained_gram(
@@ -94,9 +94,8 @@ namespace dualcontact
       ids_with(BoundaryCondition::normal_fixed),
       1,
       [&](const unsigned int, const Point<dim> &, const auto &cell) {
-        return bodies == nullptr || body_of<dim>(cell, *bodies) == body ?
-                    e :
-                    Tensor<1, dim>();
+        return bodies == nullptr || bodies->of(cell) == body ? e :
+                                                                  Tensor<1, dim>();
       },
       measure);
     return gram(0, 0) <= 1e-12 * measure;
@@ -123,13 +122,11 @@ namespace dualcontact
 
   template <int dim>
   FullMatrix<double>
-  Scene<dim>::rigid_motion_gram(const Triangulation<dim>        &triangulation,
-                                double                          &measure,
-                                const std::vector<unsigned int> *bodies) const
+  Scene<dim>::rigid_motion_gram(const Triangulation<dim> &triangulation,
+                                double                   &measure,
+                                const Bodies<dim>        *bodies) const
   {
-    const unsigned int n_bodies =
-      bodies == nullptr ? 1 :
-                          1 + *std::max_element(bodies->begin(), bodies->end());
+    const unsigned int n_bodies = bodies == nullptr ? 1 : bodies->size();
     return constrained_gram(
       triangulation,
       ids_with(BoundaryCondition::fixed),
@@ -137,8 +134,7 @@ namespace dualcontact
       n_bodies * n_rigid_motions,
       [this,
        bodies](const unsigned int i, const Point<dim> &x, const auto &cell) {
-        if (bodies != nullptr &&
-            body_of<dim>(cell, *bodies) != i / n_rigid_motions)
+        if (bodies != nullptr && bodies->of(cell) != i / n_rigid_motions)
           return Tensor<1, dim>();
         return rigid_motion(i % n_rigid_motions, x);
       },
@@ -180,27 +176,27 @@ namespace dualcontact
   template bool
   Scene<2>::translation_is_free(const Tensor<1, 2> &,
                                 const Triangulation<2> &,
-                                const std::vector<unsigned int> *,
+                                const Bodies<2> *,
                                 unsigned int) const;
   template Tensor<1, 2>
   Scene<2>::rigid_motion(unsigned int, const Point<2> &) const;
   template FullMatrix<double>
   Scene<2>::rigid_motion_gram(const Triangulation<2> &,
                               double &,
-                              const std::vector<unsigned int> *) const;
+                              const Bodies<2> *) const;
   template void
   Scene<2>::check_rigid_motions(const Triangulation<2> &) const;
   template bool
   Scene<3>::translation_is_free(const Tensor<1, 3> &,
                                 const Triangulation<3> &,
-                                const std::vector<unsigned int> *,
+                                const Bodies<3> *,
                                 unsigned int) const;
   template Tensor<1, 3>
   Scene<3>::rigid_motion(unsigned int, const Point<3> &) const;
   template FullMatrix<double>
   Scene<3>::rigid_motion_gram(const Triangulation<3> &,
                               double &,
-                              const std::vector<unsigned int> *) const;
+                              const Bodies<3> *) const;
   template void
   Scene<3>::check_rigid_motions(const Triangulation<3> &) const;
 } // namespace dualcontact

@@ -20,43 +20,6 @@
 
 namespace dualcontact
 {
-  template <int dim>
-  std::vector<unsigned int>
-  bodies_of_coarse_cells(const Triangulation<dim> &triangulation)
-  {
-    const unsigned int        n_cells = triangulation.n_cells(0);
-    std::vector<unsigned int> parent(n_cells);
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto root = [&parent](unsigned int i) {
-      while (parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-      return i;
-    };
-    std::map<unsigned int, unsigned int> first_cell_at_vertex;
-    for (const auto &cell : triangulation.cell_iterators_on_level(0))
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          const auto [it, inserted] =
-            first_cell_at_vertex.emplace(cell->vertex_index(v), cell->index());
-          if (!inserted)
-            {
-              const unsigned int a = root(it->second), b = root(cell->index());
-              parent[std::max(a, b)] = std::min(a, b);
-            }
-        }
-    // 0, 1, ... in the order of each body's first coarse cell
-    std::vector<unsigned int>            body(n_cells);
-    std::map<unsigned int, unsigned int> number;
-    for (unsigned int i = 0; i < n_cells; ++i)
-      body[i] = number.emplace(root(i), number.size()).first->second;
-    return body;
-  }
-
-  template std::vector<unsigned int>
-  bodies_of_coarse_cells(const Triangulation<2> &);
-  template std::vector<unsigned int>
-  bodies_of_coarse_cells(const Triangulation<3> &);
-
   std::string
   Effects::describe() const
   {

@@ -18,6 +18,7 @@
 
 #include <dualcontact/contact_set.h>
 
+#include <map>
 #include <set>
 #include <string>
 #include <tuple>

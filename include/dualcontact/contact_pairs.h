@@ -113,6 +113,13 @@ namespace dualcontact
       return !pairs.empty();
     }
 
+    /** The pairs, slave id -> master id. */
+    const std::map<types::boundary_id, types::boundary_id> &
+    list() const
+    {
+      return pairs;
+    }
+
     /** Whether `id` is the slave id of a pair: its faces carry nodes. */
     bool
     is_slave(const types::boundary_id id) const
@@ -157,10 +164,12 @@ namespace dualcontact
                   const AffineConstraints<double>     &constraints,
                   const std::vector<ContactNode<dim>> &nodes) const;
 
-    /** The rows add_couplings() writes. */
+    /** The rows add_couplings() writes, in an index space of `n_dofs`
+     * (none without pairs). */
     IndexSet
     coupled_rows(const AffineConstraints<double>     &constraints,
-                 const std::vector<ContactNode<dim>> &nodes) const;
+                 const std::vector<ContactNode<dim>> &nodes,
+                 types::global_dof_index              n_dofs) const;
 
     /** Slave nodes (all ranks) that face no master node. */
     types::global_dof_index

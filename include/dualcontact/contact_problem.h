@@ -424,13 +424,6 @@ namespace dualcontact
      * moment needs a centre of pressure outside the contact boundary. */
     void
     check_moment(const LoadBalance &balance) const;
-    /** Throws if a body that no support and no obstacle holds, in one
-     * contact pair, is not pressed onto the other body by its loads, or if
-     * the pair is flat and friction cannot resist the loads' tangential
-     * part; adds N / |Gamma_pair| to `held_by_friction_pressure` at the
-     * pair's nodes where only friction holds such a body tangentially. */
-    void
-    check_pair_bodies(std::vector<double> &held_by_friction_pressure) const;
     /** Throws (a runtime failure) if the solution does not balance the
      * loads to the solver tolerances. */
     void
@@ -442,10 +435,6 @@ namespace dualcontact
      * on its own. */
     void
     find_free_motions();
-    /** Each owned DoF's body (bodies_of_coarse_cells()) plus one, and 0 at
-     * the DoFs not owned. */
-    TrilinosWrappers::MPI::Vector
-    bodies_of_dofs(const std::vector<unsigned int> &body_of_coarse_cell) const;
     const Vector<float> &
     refinement_indicator();
     void

@@ -185,11 +185,20 @@ namespace dualcontact
       pairs_.add_couplings(pattern, constraints, nodes);
     }
 
-    /** The rows add_pair_couplings() writes (this rank's paired nodes). */
+    /** The rows add_pair_couplings() writes (this rank's paired nodes; none
+     * without pairs), in an index space of `n_dofs`. */
     IndexSet
-    coupled_rows(const AffineConstraints<double> &constraints) const
+    coupled_rows(const AffineConstraints<double> &constraints,
+                 const types::global_dof_index    n_dofs) const
     {
-      return pairs_.coupled_rows(constraints, nodes);
+      return pairs_.coupled_rows(constraints, nodes, n_dofs);
+    }
+
+    /** The contact pairs between bodies and their coupling. */
+    const ContactPairs<dim> &
+    pairs() const
+    {
+      return pairs_;
     }
 
     /**

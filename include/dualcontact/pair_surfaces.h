@@ -19,6 +19,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
+#include <dualcontact/bodies.h>
 #include <dualcontact/mortar.h>
 #include <dualcontact/mortar_3d.h>
 
@@ -83,7 +84,7 @@ namespace dualcontact
                   const DoFHandler<dim>           &dof_handler,
                   const AffineConstraints<double> &hanging,
                   const types::boundary_id         id,
-                  const std::vector<unsigned int> &body_of_coarse_cell,
+                  const Bodies<dim>               &bodies,
                   const bool                       owned_only,
                   const bool                       with_parents);
 

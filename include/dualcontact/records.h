@@ -147,7 +147,7 @@ namespace dualcontact
     std::array<double, 3>                               applied_load{};
     // on a mesh of more than one body (contact pairs), the reactions and
     // the applied loads of each body (the connected parts of the mesh,
-    // numbered as bodies_of_coarse_cells() numbers them, scene.h)
+    // numbered as Bodies numbers them, bodies.h)
     std::vector<std::array<double, 3>> on_body, load_on_body;
     // and the contact forces on each body (from the obstacle and the other
     // bodies)

@@ -14,6 +14,7 @@
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <dualcontact/bodies.h>
 #include <dualcontact/discretization.h>
 #include <dualcontact/expressions.h>
 #include <dualcontact/friction_law.h>
@@ -31,27 +32,6 @@
 namespace dualcontact
 {
   using namespace dealii;
-
-  /**
-   * The bodies of a mesh: the connected components of its coarse mesh
-   * (cells that share a vertex), which every rank holds whole, one number
-   * per coarse cell: 0, 1, ... in the order of each body's first coarse
-   * cell.
-   */
-  template <int dim>
-  std::vector<unsigned int>
-  bodies_of_coarse_cells(const Triangulation<dim> &triangulation);
-
-  /** The body of a cell: its coarse ancestor's. */
-  template <int dim, typename Iterator>
-  unsigned int
-  body_of(const Iterator &cell, const std::vector<unsigned int> &bodies)
-  {
-    typename Triangulation<dim>::cell_iterator coarse = cell;
-    while (coarse->level() > 0)
-      coarse = coarse->parent();
-    return bodies[coarse->index()];
-  }
 
   /** What a scene calls for; the solver composes only these. */
   struct Effects
@@ -176,26 +156,26 @@ namespace dualcontact
      * where displacements are prescribed, summed over the ranks; `measure`
      * gets that part's length (area). A combination c of rigid motions is
      * left free by the boundary conditions iff G c = 0. With `bodies`
-     * (bodies_of_coarse_cells()) each body moves on its own: the index
+     * each body moves on its own: the index
      * b n_rigid_motions + i is the motion i of body b, zero on the others.
      * Collective.
      */
     FullMatrix<double>
-    rigid_motion_gram(const Triangulation<dim>        &triangulation,
-                      double                          &measure,
-                      const std::vector<unsigned int> *bodies = nullptr) const;
+    rigid_motion_gram(const Triangulation<dim> &triangulation,
+                      double                   &measure,
+                      const Bodies<dim>        *bodies = nullptr) const;
 
     /**
      * Whether the rigid translation along e is left free by the fixed and
      * normal-fixed boundaries (only contact could stop it): of the whole
-     * mesh, or, with `bodies` (the body of each coarse cell), of body
+     * mesh, or, with `bodies`, of body
      * `body` alone. Collective.
      */
     bool
-    translation_is_free(const Tensor<1, dim>            &e,
-                        const Triangulation<dim>        &triangulation,
-                        const std::vector<unsigned int> *bodies = nullptr,
-                        unsigned int                     body   = 0) const;
+    translation_is_free(const Tensor<1, dim>     &e,
+                        const Triangulation<dim> &triangulation,
+                        const Bodies<dim>        *bodies = nullptr,
+                        unsigned int              body   = 0) const;
 
     const Effects &
     effects() const

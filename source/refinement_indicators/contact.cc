@@ -172,7 +172,8 @@ namespace dualcontact
      * every owned cell and each of its faces F on a pair's master id,
      *   eta_F^2 = weight h_F / E^2 int_F |sigma(u_h) n_F - tau|^2,
      * the residual of the traction tau that the slave's multipliers put on
-     * the master (master_tractions()), interpolated on F.
+     * the master (master_tractions()), interpolated on F. Nothing
+     * without pairs.
      */
     template <int dim>
     void
@@ -181,9 +182,10 @@ namespace dualcontact
                     Vector<float>             &indicator)
     {
       std::set<types::boundary_id> master_ids;
-      for (const auto &[slave, master] :
-           input.parameters.boundary.contact_pairs)
+      for (const auto &[slave, master] : input.contact.pairs().list())
         master_ids.insert(master);
+      if (master_ids.empty())
+        return;
       const TrilinosWrappers::MPI::Vector tau =
         master_tractions(input, master_ids);
       const FiniteElement<dim> &fe         = input.dof_handler.get_fe();
@@ -244,8 +246,7 @@ namespace dualcontact
         numbers_of(input.values, "Refinement/Contact indicator weight").at(0);
       if (!input.contact_ids.empty())
         add_contact_term(input, input.multipliers(), weight, eta);
-      if (input.contact.has_pairs())
-        add_master_term(input, weight, eta);
+      add_master_term(input, weight, eta);
       return eta;
     }
 
