@@ -7,6 +7,7 @@
 #include <dualcontact/geometry.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/mesh_file.h>
+#include <dualcontact/parameters.h>
 #include <dualcontact/registry.h>
 
 #include <algorithm>

@@ -8,6 +8,7 @@
 #include <dualcontact/contact_functions.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/newton_solver.h>
+#include <dualcontact/parameters.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,3 +1,4 @@
+#include <dualcontact/parameters.h>
 #include <dualcontact/refinement_indicator.h>
 #include <dualcontact/registry.h>
 

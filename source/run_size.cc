@@ -1,6 +1,7 @@
 #include <dualcontact/geometry.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
 #include <dualcontact/refinement_indicator_kind.h>
 #include <dualcontact/run_size.h>
 

@@ -1,4 +1,5 @@
 // The times of a load path's later steps (step_control.h).
+#include <dualcontact/parameters.h>
 #include <dualcontact/step_control.h>
 
 #include <algorithm>

@@ -3,6 +3,7 @@
 
 #include <dualcontact/contact_functions.h>
 #include <dualcontact/input_error.h>
+#include <dualcontact/parameters.h>
 #include <dualcontact/threshold_iteration.h>
 
 #include <cmath>

@@ -4,6 +4,7 @@
 
 #include <dualcontact/contact_functions.h>
 #include <dualcontact/input_error.h>
+#include <dualcontact/parameters.h>
 #include <dualcontact/uzawa_iteration.h>
 
 #include <algorithm>

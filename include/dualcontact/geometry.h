@@ -12,8 +12,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <dualcontact/cell_kind.h>
 #include <dualcontact/entry_declaration.h>
-#include <dualcontact/parameters.h>
 
 #include <array>
 #include <functional>
@@ -25,6 +25,10 @@
 namespace dualcontact
 {
   using namespace dealii;
+
+  struct BoundaryManifold;   // parameters.h
+  struct GeometryParameters; // parameters.h
+  struct Parameters;         // parameters.h
 
   /** A body's shape, built from the parameters for one scene. */
   template <int dim>

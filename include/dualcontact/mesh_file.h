@@ -8,8 +8,6 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <dualcontact/parameters.h>
-
 #include <functional>
 #include <set>
 #include <string>
@@ -17,6 +15,10 @@
 namespace dualcontact
 {
   using namespace dealii;
+
+  struct BoundaryManifold;   // parameters.h
+  struct GeometryParameters; // parameters.h
+  struct Parameters;         // parameters.h
 
   /**
    * Read <Geometry/Mesh file> into `mesh` (a serial triangulation, the

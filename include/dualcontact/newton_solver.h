@@ -14,13 +14,14 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/contact_system.h>
 #include <dualcontact/elasticity.h>
-#include <dualcontact/parameters.h>
 
 #include <vector>
 
 namespace dualcontact
 {
   using namespace dealii;
+
+  struct SolverParameters; // parameters.h
 
   /** What one minimisation took. */
   struct NewtonStatistics

@@ -14,7 +14,7 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <dualcontact/parameters.h>
+#include <dualcontact/material_parameters.h>
 #include <dualcontact/records.h>
 
 #include <array>

@@ -16,7 +16,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <dualcontact/parameters.h>
+#include <dualcontact/material_parameters.h>
 
 #include <string>
 #include <vector>

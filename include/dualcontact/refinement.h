@@ -14,7 +14,6 @@
 #include <deal.II/lac/vector.h>
 
 #include <dualcontact/contact_set.h>
-#include <dualcontact/parameters.h>
 
 #include <set>
 

@@ -25,7 +25,6 @@
 #include <deal.II/lac/vector.h>
 
 #include <dualcontact/contact_set.h>
-#include <dualcontact/parameters.h>
 #include <dualcontact/refinement_indicator_kind.h>
 
 #include <functional>
@@ -36,6 +35,8 @@
 namespace dualcontact
 {
   using namespace dealii;
+
+  struct Parameters; // parameters.h
 
   /** What an indicator may read of a solved mesh. */
   template <int dim>

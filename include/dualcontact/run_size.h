@@ -7,12 +7,14 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <dualcontact/parameters.h>
+#include <dualcontact/cell_kind.h>
 
 #include <string>
 
 namespace dualcontact
 {
+  struct Parameters; // parameters.h
+
   /** The estimated size of the finest mesh of a run. */
   struct RunSize
   {

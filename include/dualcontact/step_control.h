@@ -5,14 +5,14 @@
 #ifndef dualcontact_step_control_h
 #define dualcontact_step_control_h
 
-#include <dualcontact/parameters.h>
-
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace dualcontact
 {
+  struct LoadPathParameters; // parameters.h
+
   /**
    * Where a load path goes next. The listed times t_1 < ... < t_N (<Load
    * path/Times>, or the uniform ones) are reached exactly, in turn; t_1 is

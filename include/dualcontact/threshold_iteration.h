@@ -7,12 +7,13 @@
 
 #include <dualcontact/contact_set.h>
 #include <dualcontact/contact_system.h>
-#include <dualcontact/parameters.h>
 #include <dualcontact/uzawa_iteration.h>
 
 namespace dualcontact
 {
   using namespace dealii;
+
+  struct FrictionParameters; // parameters.h
 
   /**
    * Where a solve starts: from zero, or from the fields carried from the

@@ -14,7 +14,6 @@
 #include <dualcontact/contact_set.h>
 #include <dualcontact/contact_system.h>
 #include <dualcontact/newton_solver.h>
-#include <dualcontact/parameters.h>
 
 #include <string>
 #include <vector>
@@ -22,6 +21,8 @@
 namespace dualcontact
 {
   using namespace dealii;
+
+  struct SolverParameters; // parameters.h
 
   template <int dim>
   class UzawaIteration

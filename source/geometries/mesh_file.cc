@@ -11,6 +11,7 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/mesh_file.h>
 #include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
 
 #include <algorithm>
 #include <cmath>

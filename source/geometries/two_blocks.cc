@@ -8,6 +8,7 @@
 #include <dualcontact/geometry.h>
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
+#include <dualcontact/parameters.h>
 
 #include <array>
 #include <cmath>

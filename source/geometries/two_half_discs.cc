@@ -8,6 +8,7 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/obstacle.h>
 #include <dualcontact/parameter_helpers.h>
+#include <dualcontact/parameters.h>
 
 #include <cmath>
 

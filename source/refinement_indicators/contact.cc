@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <dualcontact/discretization.h>
+#include <dualcontact/parameters.h>
 #include <dualcontact/refinement.h>
 #include <dualcontact/refinement_indicator.h>
 
