@@ -137,13 +137,8 @@ namespace dualcontact
           << ", nu = " << parameters.material.poissons_ratio << ", "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI rank(s)\n";
-    std::vector<std::string> parts;
-    for (const auto &[id, condition] : parameters.boundary.conditions)
-      parts.push_back("id " + std::to_string(id) + " " + to_string(condition));
-    for (const auto &[slave, master] : parameters.boundary.contact_pairs)
-      parts.push_back("id " + std::to_string(slave) + " slave, id " +
-                      std::to_string(master) + " master of a contact pair");
-    pcout << wrap("Boundary parts: ", parts, ", ", "  ");
+    pcout << wrap(
+      "Boundary parts: ", parameters.boundary.parts_in_words(), ", ", "  ");
     pcout << "Effects composed for this scene:\n" << scene.effects().describe();
   }
 

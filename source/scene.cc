@@ -147,17 +147,14 @@ namespace dualcontact
                            const std::string         &path)
   {
     const MaterialParameters &material = parameters.material;
-    effects_.contact =
-      !ids_with(BoundaryCondition::contact).empty() || !contact_pairs().empty();
+    effects_.contact                   = parameters.boundary.has_contact();
     effects_.obstacle_contact = !ids_with(BoundaryCondition::contact).empty();
-    for (const auto &[slave, master] : contact_pairs())
-      effects_.pairs += (effects_.pairs.empty() ? "" : ", ") +
-                        std::to_string(slave) + " on " + std::to_string(master);
-    effects_.pair_coupling = parameters.boundary.node_to_segment ?
-                               "node to segment (one pass)" :
-                               "dual mortar";
-    effects_.obstacle      = (*obstacle_)->description();
-    obstacle_moves_        = obstacle_->displacement().norm() > 0;
+    effects_.pairs            = parameters.boundary.pairs_in_words();
+    effects_.pair_coupling    = parameters.boundary.node_to_segment ?
+                                  "node to segment (one pass)" :
+                                  "dual mortar";
+    effects_.obstacle         = (*obstacle_)->description();
+    obstacle_moves_           = obstacle_->displacement().norm() > 0;
     if (obstacle_path != nullptr && times.size() > 1 && uses_time(path))
       {
         obstacle_moves_ = true;

@@ -174,6 +174,17 @@ namespace dualcontact
     condition(const boundary_id id) const;
     std::vector<boundary_id>
     ids_with(const BoundaryCondition condition) const;
+    /** The ids whose faces carry contact nodes: those of the condition
+     * 'contact', and the slave ids of the contact pairs. */
+    std::set<boundary_id>
+    contact_ids() const;
+    /** Each id's condition, and each pair's slave and master ids, in words
+     * ("id 3 fixed", "id 4 slave, id 5 master of a contact pair"). */
+    std::vector<std::string>
+    parts_in_words() const;
+    /** The pairs as "slave on master", comma-separated ("" without). */
+    std::string
+    pairs_in_words() const;
     /** Contact of any kind: with the obstacle, or a contact pair. */
     bool
     has_contact() const

@@ -204,10 +204,7 @@ namespace dualcontact
     std::set<types::boundary_id>
     contact_ids() const
     {
-      auto ids = ids_with(BoundaryCondition::contact);
-      for (const auto &[slave, master] : contact_pairs())
-        ids.insert(slave);
-      return ids;
+      return parameters.boundary.contact_ids();
     }
 
     /** Boundary ids carrying each condition. */

@@ -94,6 +94,39 @@ namespace dualcontact
     return ids;
   }
 
+  std::set<boundary_id>
+  BoundaryParameters::contact_ids() const
+  {
+    std::set<boundary_id> ids;
+    for (const boundary_id id : ids_with(BoundaryCondition::contact))
+      ids.insert(id);
+    for (const auto &[slave, master] : contact_pairs)
+      ids.insert(slave);
+    return ids;
+  }
+
+  std::vector<std::string>
+  BoundaryParameters::parts_in_words() const
+  {
+    std::vector<std::string> parts;
+    for (const auto &[id, condition] : conditions)
+      parts.push_back("id " + std::to_string(id) + " " + to_string(condition));
+    for (const auto &[slave, master] : contact_pairs)
+      parts.push_back("id " + std::to_string(slave) + " slave, id " +
+                      std::to_string(master) + " master of a contact pair");
+    return parts;
+  }
+
+  std::string
+  BoundaryParameters::pairs_in_words() const
+  {
+    std::string words;
+    for (const auto &[slave, master] : contact_pairs)
+      words += (words.empty() ? "" : ", ") + std::to_string(slave) + " on " +
+               std::to_string(master);
+    return words;
+  }
+
   void
   BoundaryParameters::declare_parameters(EntryDeclarer &declarer)
   {
