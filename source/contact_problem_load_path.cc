@@ -145,7 +145,7 @@ namespace dualcontact
   void
   ContactProblem<dim>::move_to_step_time()
   {
-    make_constraints(scene.effects().contact && contact_set.has_pairs());
+    make_constraints(/*contact_set_built=*/scene.effects().contact);
     if (scene.effects().contact)
       contact_set.place_obstacle(scene.obstacle(), mpi_communicator);
   }

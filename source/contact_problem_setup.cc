@@ -122,8 +122,7 @@ namespace dualcontact
                           contact_setup(scene));
         AssertThrow(contact_set.n_global_nodes() > 0,
                     ExcMessage("The contact boundary has no contact nodes."));
-        if (contact_set.has_pairs())
-          make_constraints(true);
+        make_constraints(/*contact_set_built=*/true);
       }
 
     // The elements' couplings, and on a pair those of each slave node with
@@ -157,7 +156,7 @@ namespace dualcontact
 
   template <int dim>
   void
-  ContactProblem<dim>::make_constraints(const bool couple_masters)
+  ContactProblem<dim>::make_constraints(const bool contact_set_built)
   {
     // A slave node's coupling adds its forces and its Newton terms at the
     // master DoFs through these constraints. A master DoF off this rank's
@@ -166,6 +165,8 @@ namespace dualcontact
     // goes into an equation that the solve does not have: the Newton
     // gradient then keeps a part that no step reduces. Its owner has the
     // constraint and sends it.
+    const bool couple_masters =
+      contact_set_built && scene.effects().contact && contact_set.has_pairs();
     IndexSet relevant = locally_relevant_dofs;
     if (couple_masters)
       relevant.add_indices(contact_set.master_dofs(dof_handler.n_dofs()));
@@ -213,11 +214,11 @@ namespace dualcontact
   template MeshRecord
   ContactProblem<2>::setup_system(const unsigned int cycle);
   template void
-  ContactProblem<2>::make_constraints(const bool couple_masters);
+  ContactProblem<2>::make_constraints(const bool contact_set_built);
   template void
   ContactProblem<3>::make_grid();
   template MeshRecord
   ContactProblem<3>::setup_system(const unsigned int cycle);
   template void
-  ContactProblem<3>::make_constraints(const bool couple_masters);
+  ContactProblem<3>::make_constraints(const bool contact_set_built);
 } // namespace dualcontact

@@ -87,12 +87,13 @@ namespace dualcontact
     /**
      * The constraints of the mesh: hanging nodes, then the prescribed
      * displacements at the scene's time, then the sliders. With
-     * `couple_masters` (contact pairs, after the pairing) also those of the
-     * master DoFs that this rank's slave nodes couple to, from their owners
-     * (collective).
+     * `contact_set_built` (the contact set is set up on this mesh) also
+     * those of the master DoFs that this rank's slave nodes couple to on a
+     * contact pair, from their owners (collective; nothing more without
+     * pairs).
      */
     void
-    make_constraints(const bool couple_masters = false);
+    make_constraints(const bool contact_set_built = false);
 
     /**
      * Nested iteration: interpolate v, the multipliers and the threshold
