@@ -7,6 +7,7 @@
 #include <deal.II/base/point.h>
 
 #include <dualcontact/entry_declaration.h>
+#include <dualcontact/geometry.h>
 #include <dualcontact/parameters.h>
 
 #include <string>
@@ -63,6 +64,40 @@ namespace dualcontact
     center(const GeometryParameters &geometry);
     double
     longest_side(const GeometryParameters &geometry, unsigned int dim);
+
+    /**
+     * What a box-shaped geometry answers alike: its cell kind, centre and
+     * size from the <Geometry> entries it keeps.
+     */
+    template <int dim>
+    class BoxGeometry : public Geometry<dim>
+    {
+    public:
+      explicit BoxGeometry(const Parameters &parameters)
+          : g(parameters.geometry)
+      {}
+
+      CellKind
+      cell_kind() const override
+      {
+        return g.cell_kind;
+      }
+
+      Point<dim>
+      center() const override
+      {
+        return box::center<dim>(g);
+      }
+
+      double
+      characteristic_length() const override
+      {
+        return box::longest_side(g, dim);
+      }
+
+    protected:
+      const GeometryParameters &g;
+    };
   } // namespace box
 } // namespace dualcontact
 

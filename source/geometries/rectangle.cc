@@ -148,18 +148,10 @@ namespace dualcontact
   namespace
   {
     template <int dim>
-    class Rectangle : public Geometry<dim>
+    class Rectangle : public box::BoxGeometry<dim>
     {
     public:
-      explicit Rectangle(const Parameters &parameters)
-          : g(parameters.geometry)
-      {}
-
-      CellKind
-      cell_kind() const override
-      {
-        return g.cell_kind;
-      }
+      using box::BoxGeometry<dim>::BoxGeometry;
 
       double
       n_coarse_cells() const override
@@ -202,20 +194,8 @@ namespace dualcontact
         triangulation.copy_triangulation(serial);
       }
 
-      Point<dim>
-      center() const override
-      {
-        return box::center<dim>(g);
-      }
-
-      double
-      characteristic_length() const override
-      {
-        return box::longest_side(g, dim);
-      }
-
     private:
-      const GeometryParameters &g;
+      using box::BoxGeometry<dim>::g;
     };
 
     template <int dim>

@@ -77,18 +77,10 @@ namespace dualcontact
     }
 
     template <int dim>
-    class TwoBlocks : public Geometry<dim>
+    class TwoBlocks : public box::BoxGeometry<dim>
     {
     public:
-      explicit TwoBlocks(const Parameters &parameters)
-          : g(parameters.geometry)
-      {}
-
-      CellKind
-      cell_kind() const override
-      {
-        return g.cell_kind;
-      }
+      using box::BoxGeometry<dim>::BoxGeometry;
 
       double
       n_coarse_cells() const override
@@ -126,20 +118,8 @@ namespace dualcontact
         triangulation.copy_triangulation(serial);
       }
 
-      Point<dim>
-      center() const override
-      {
-        return box::center<dim>(g);
-      }
-
-      double
-      characteristic_length() const override
-      {
-        return box::longest_side(g, dim);
-      }
-
     private:
-      const GeometryParameters &g;
+      using box::BoxGeometry<dim>::g;
     };
 
     template <int dim>
