@@ -73,7 +73,14 @@ namespace dualcontact
       , uzawa(parameters.solver, newton)
       , threshold_iteration(parameters.friction, uzawa)
       , probes(parameters.output.probe_points)
-  {}
+  {
+    if (parameters.material.formulation == Formulation::mixed)
+      mixed =
+        std::make_unique<MixedBulk<dim>>(triangulation,
+                                         scene.discretization().cell_kind(),
+                                         scene.discretization().degree(),
+                                         this->parameters.material);
+  }
 
   // The algorithm: on each mesh of a nested sequence, set up, carry the
   // previous mesh's fields over, assemble, solve, measure, write; then
@@ -197,6 +204,8 @@ namespace dualcontact
       }
     transfer->interpolate(fields);
     transfer.reset();
+    if (mixed)
+      mixed->finish_transfer();
     constraints.distribute(carried_v);
     carried           = true;
     record.warm_start = true;
@@ -234,6 +243,8 @@ namespace dualcontact
                         system_rhs,
                         contact ? &mass : nullptr,
                         &applied_load);
+    if (mixed)
+      mixed->assemble(mapping, dof_handler, constraints);
     // An expression may evaluate to NaN or infinity somewhere (sqrt of a
     // negative number, log of zero): stop here, naming the suspects, rather
     // than solve with it.
@@ -308,9 +319,47 @@ namespace dualcontact
     if (carried) // nested iteration: the coarse solution is a first guess
       v = carried_v;
     elastic_solver.initialize(system_matrix);
-    record.cg_iterations = elastic_solver.solve(system_matrix, v, system_rhs);
+    if (mixed)
+      record.cg_iterations = solve_mixed_elasticity(v);
+    else
+      record.cg_iterations = elastic_solver.solve(system_matrix, v, system_rhs);
     constraints.distribute(v);
     return record;
+  }
+
+  template <int dim>
+  unsigned int
+  ContactProblem<dim>::solve_mixed_elasticity(TrilinosWrappers::MPI::Vector &v)
+  {
+    // one step from (v, p) to the solution: the saddle-point system for the
+    // correction, with the residual b - K v - B^T p and the constraint's
+    constraints.distribute(v);
+    TrilinosWrappers::MPI::Vector residual(system_rhs), correction(system_rhs);
+    system_matrix.vmult(residual, v);
+    mixed->add_pressure_forces(residual);
+    residual.sadd(-1., 1., system_rhs);
+    homogeneous_constraints.set_zero(residual);
+    const auto [converged, iterations] =
+      mixed->solve(system_matrix,
+                   elastic_solver.amg(),
+                   v,
+                   residual,
+                   correction,
+                   parameters.solver.linear_tolerance,
+                   parameters.solver.max_linear_iterations);
+    AssertThrow(converged,
+                ExcMessage("MINRES did not solve the mixed saddle-point "
+                           "system in " +
+                           std::to_string(iterations) +
+                           " iterations: raise <Solver/Maximum linear "
+                           "iterations>, or check that the scene holds the "
+                           "body and, at nu = 0.5, that some boundary is free "
+                           "to move (otherwise nothing determines the "
+                           "pressure's constant)."));
+    homogeneous_constraints.distribute(correction);
+    v += correction;
+    mixed->update_pressure(correction);
+    return iterations;
   }
 
   template <int dim>
@@ -320,22 +369,23 @@ namespace dualcontact
     SolveRecord record;
     held_by_friction_pressure = check_equilibrium();
 
-    // r is relative to (lambda + 2 mu) / h_k, so that the Uzawa steps do
-    // not depend on the units, the mesh size or the degree; the P-wave
-    // modulus lambda + 2 mu rather than E, because it follows the stiffness
-    // of a nearly incompressible (locked) material, for which r_rel E / h_k
-    // is far too small. h_k = h_C / k is the spacing of the contact nodes:
-    // at degree k the slowest multiplier mode lives on one node spacing, and
-    // r scaled with the faces alone slows the Uzawa rate with k
+    // r is relative to M / h_k, so that the Uzawa steps do not depend on
+    // the units, the mesh size or the degree; M is the contact modulus of
+    // material_parameters.h: the P-wave modulus lambda + 2 mu rather than
+    // E in displacements, because it follows the stiffness of a nearly
+    // incompressible (locked) material, for which r_rel E / h_k is far too
+    // small, and 4 mu in the mixed formulation, which does not lock. h_k = h_C
+    // / k is the spacing of the contact nodes: at degree k the slowest
+    // multiplier mode lives on one node spacing, and r scaled with the faces
+    // alone slows the Uzawa rate with k (doc/theory.md §5). The friction terms
+    // have their own r_t, scaled alike: by default r in 2D and r / 4 in 3D,
+    // where friction terms as large as r make the Newton matrices hard
     // (doc/theory.md §5).
-    // The friction terms have their own r_t, scaled alike: by default r in
-    // 2D and r / 4 in 3D, where friction terms as large as r make the Newton
-    // matrices hard (doc/theory.md §5).
     const double r_t_rel =
       parameters.solver.tangential_augmentation > 0. ?
         parameters.solver.tangential_augmentation :
         (dim == 2 ? 1. : 0.25) * parameters.solver.augmentation;
-    const double modulus = parameters.material.stiffest().p_wave_modulus();
+    const double modulus = parameters.material.stiffest().contact_modulus();
     const double h_k =
       contact_set.min_face_diameter() / parameters.discretization.degree;
     r                        = parameters.solver.augmentation * modulus / h_k;
@@ -373,6 +423,7 @@ namespace dualcontact
                          previous_size,
                          same_stiffness};
     system.anchored_at_start = &anchored_at_start;
+    system.pressure          = mixed.get();
     return system;
   }
 
@@ -557,6 +608,8 @@ namespace dualcontact
         transfer = std::make_unique<FieldTransfer<dim>>(dof_handler);
         triangulation.prepare_coarsening_and_refinement();
         transfer->prepare(fields);
+        if (mixed)
+          mixed->prepare_transfer();
       }
     triangulation.execute_coarsening_and_refinement();
   }

@@ -151,7 +151,13 @@ namespace dualcontact
   ContactProblem<dim>::potential_energy() const
   {
     TimerOutput::Scope t(computing_timer, "postprocess");
-    return dualcontact::potential_energy(mapping, dof_handler, scene, solution);
+    // in the mixed formulation the deviatoric energy, and the pressure's
+    // (1/2) p.C p
+    return dualcontact::potential_energy(mapping,
+                                         dof_handler,
+                                         scene,
+                                         solution) +
+           (mixed ? mixed->compliance_energy() : 0.);
   }
 
   template <int dim>
@@ -224,13 +230,19 @@ namespace dualcontact
         contact_forces.reinit(locally_owned_dofs, mpi_communicator);
         if (scene.effects().contact)
           contact_set.add_nodal_forces(contact_forces);
-        record = dualcontact::compute_reactions(mapping,
-                                                dof_handler,
-                                                scene,
-                                                constraints,
-                                                hanging_node_constraints,
-                                                solution,
-                                                &contact_forces);
+        TrilinosWrappers::MPI::Vector pressure_forces;
+        if (mixed)
+          pressure_forces =
+            mixed->unconstrained_pressure_forces(mapping, dof_handler);
+        record =
+          dualcontact::compute_reactions(mapping,
+                                         dof_handler,
+                                         scene,
+                                         constraints,
+                                         hanging_node_constraints,
+                                         solution,
+                                         &contact_forces,
+                                         mixed ? &pressure_forces : nullptr);
       }
 
     // Equilibrium of the whole mesh: contact force, reactions and applied

@@ -151,6 +151,8 @@ namespace dualcontact
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
+    if (mixed)
+      mixed->setup(dof_handler, constraints);
     return {cycle, triangulation.n_global_active_cells(), dof_handler.n_dofs()};
   }
 

@@ -62,8 +62,10 @@ namespace dualcontact
         const unsigned int               n_dofs    = loads.fe.n_dofs_per_cell();
         const FEValuesExtractors::Vector displacement(0);
         // each body its material (<Material/Materials by id>)
+        // (in the mixed formulation the deviatoric part alone: the
+        // pressure carries the rest, mixed_bulk.h)
         const MaterialParameters here   = material.of(cell->material_id());
-        const double             lambda = here.lambda(), mu = here.mu();
+        const double             lambda = here.block_lambda(), mu = here.mu();
         matrix = 0;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
@@ -182,7 +184,8 @@ namespace dualcontact
                    const DoFHandler<dim>               &dof_handler,
                    const Scene<dim>                    &scene,
                    const TrilinosWrappers::MPI::Vector &solution,
-                   const TrilinosWrappers::MPI::Vector *contact_forces)
+                   const TrilinosWrappers::MPI::Vector *contact_forces,
+                   const TrilinosWrappers::MPI::Vector *pressure_forces)
     {
       const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
       CellAssembler<dim> local(mapping, dof_handler.get_fe(), scene);
@@ -221,6 +224,8 @@ namespace dualcontact
       result.residual.compress(VectorOperation::add);
       if (contact_forces != nullptr)
         result.residual += *contact_forces;
+      if (pressure_forces != nullptr)
+        result.residual += *pressure_forces;
       return result;
     }
 
@@ -343,7 +348,8 @@ namespace dualcontact
                     const AffineConstraints<double> &constraints,
                     const AffineConstraints<double> &hanging_node_constraints,
                     const TrilinosWrappers::MPI::Vector &solution,
-                    const TrilinosWrappers::MPI::Vector *contact_forces)
+                    const TrilinosWrappers::MPI::Vector *contact_forces,
+                    const TrilinosWrappers::MPI::Vector *pressure_forces)
   {
     // The residual of the unconstrained equations, R = A u - f, is zero at
     // every free DoF; at a constrained one it is the force the support
@@ -352,8 +358,8 @@ namespace dualcontact
     // tangential DoFs are free, and at a node shared with the contact
     // boundary the free components carry the contact force, not a reaction.
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    const BodyResiduals residuals =
-      body_residuals(mapping, dof_handler, scene, solution, contact_forces);
+    const BodyResiduals residuals = body_residuals(
+      mapping, dof_handler, scene, solution, contact_forces, pressure_forces);
     ReactionRecord record;
     for (unsigned int c = 0; c < dim; ++c)
       record.applied_load[c] = Utilities::MPI::sum(residuals.load[c], comm);
@@ -666,6 +672,7 @@ namespace dualcontact
     const AffineConstraints<double> &,                                                \
     const AffineConstraints<double> &,                                                \
     const TrilinosWrappers::MPI::Vector &,                                            \
+    const TrilinosWrappers::MPI::Vector *,                                            \
     const TrilinosWrappers::MPI::Vector *);                                           \
   template double potential_energy<dim>(                                              \
     const Mapping<dim> &,                                                             \

@@ -9,10 +9,12 @@
 #include <dualcontact/input_error.h>
 #include <dualcontact/newton_solver.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/pressure_coupling.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <tuple>
 
 namespace dualcontact
 {
@@ -72,6 +74,8 @@ namespace dualcontact
   {
     const auto &constraints = system->homogeneous_constraints;
     system->stiffness.vmult(smooth, v);
+    if (system->pressure != nullptr)
+      system->pressure->add_pressure_forces(smooth);
     if (system->chi_scale != 1.)
       {
         TrilinosWrappers::MPI::Vector Mv(v);
@@ -310,13 +314,20 @@ namespace dualcontact
     system->homogeneous_constraints.set_zero(free_direction);
     system->stiffness.vmult(tmp, free_direction);
     double q2 = free_direction * tmp;
+    // in the mixed formulation the pressure takes its whole step, and the
+    // merit function has an exact penalty on the incompressibility
+    // constraint (pressure_coupling.h)
+    const PressureCoupling::LineTerms pressure =
+      system->pressure != nullptr ?
+        system->pressure->update_pressure(direction) :
+        PressureCoupling::LineTerms();
     if (system->chi_scale != 1.)
       {
         system->mass.vmult(tmp, free_direction);
         q2 += system->proximal_correction() * (free_direction * tmp);
       }
-    const double                         q1 = smooth_gradient * direction;
-    const TrilinosWrappers::MPI::Vector &d  = contact.with_masters(direction);
+    const double q1 = smooth_gradient * direction + pressure.slope;
+    const TrilinosWrappers::MPI::Vector &d = contact.with_masters(direction);
     for (unsigned int s = 0; s < n; ++s)
       {
         dn[s] = contact.normal_displacement(d, s);
@@ -348,7 +359,9 @@ namespace dualcontact
       Utilities::MPI::sum(ArrayView<const double>(local, 2),
                           comm,
                           ArrayView<double>(global, 2));
-      return std::make_pair(q1 + alpha * q2 + global[0], q2 + global[1]);
+      const auto penalty = pressure.penalty(alpha);
+      return std::make_pair(q1 + alpha * q2 + global[0] + penalty[1],
+                            q2 + global[1] + penalty[2]);
     };
     // phi(1) - phi(0), for the sufficient-decrease (Armijo) test of the
     // full step
@@ -367,7 +380,8 @@ namespace dualcontact
                             contact.threshold[s]) -
                       huber(y[s], contact.threshold[s]));
         }
-      return q1 + 0.5 * q2 + Utilities::MPI::sum(local, comm);
+      return q1 + 0.5 * q2 + Utilities::MPI::sum(local, comm) +
+             pressure.penalty(1.)[0] - pressure.penalty(0.)[0];
     };
     // The full step when it decreases M_k enough, else the minimiser.
     if (!parameters.line_search ||
@@ -540,9 +554,10 @@ namespace dualcontact
   template <int dim>
   void
   NewtonSolver<dim>::solve_for_direction(const ContactSet<dim> &contact,
-                                         const double           forcing,
-                                         IterationRecord       &record,
-                                         NewtonStatistics      &statistics)
+                                         const TrilinosWrappers::MPI::Vector &v,
+                                         const double      forcing,
+                                         IterationRecord  &record,
+                                         NewtonStatistics &statistics)
   {
     // The Newton direction: H d = -grad, by CG with AMG, solved only as
     // accurately as the target needs (inexact Newton: `forcing` is the
@@ -559,6 +574,20 @@ namespace dualcontact
     direction            = 0;
     bool solved          = false;
     record.cg_iterations = 0;
+    // one linear solve: CG, or in the mixed formulation MINRES on the
+    // saddle-point system (pressure_coupling.h), each with the AMG of H
+    const auto linear_solve = [&](const unsigned int max_iterations) {
+      if (system->pressure == nullptr)
+        return linear_solver.try_solve(
+          H, direction, newton_rhs, forcing, max_iterations);
+      return system->pressure->solve(H,
+                                     linear_solver.amg(),
+                                     v,
+                                     newton_rhs,
+                                     direction,
+                                     forcing,
+                                     max_iterations);
+    };
     if (record.amg_setups == 0)
       {
         // The AMG of an earlier Newton matrix. The contact terms r m_s
@@ -570,11 +599,7 @@ namespace dualcontact
         // times those plus 30, and the AMG is built for this matrix; CG
         // goes on from where it stopped.
         const auto [converged, iterations] =
-          linear_solver.try_solve(H,
-                                  direction,
-                                  newton_rhs,
-                                  forcing,
-                                  3 * cg_iterations_after_setup + 30);
+          linear_solve(3 * cg_iterations_after_setup + 30);
         record.cg_iterations = iterations;
         solved               = converged;
         statistics.times.cg += lap(clock);
@@ -589,12 +614,24 @@ namespace dualcontact
           }
       }
     unsigned int final_iterations = record.cg_iterations;
-    if (!solved)
+    if (!solved && system->pressure == nullptr)
+      final_iterations = linear_solver.solve(H, direction, newton_rhs, forcing);
+    else if (!solved)
       {
-        final_iterations =
-          linear_solver.solve(H, direction, newton_rhs, forcing);
-        record.cg_iterations += final_iterations;
+        bool converged;
+        std::tie(converged, final_iterations) =
+          linear_solve(parameters.max_linear_iterations);
+        AssertThrow(converged,
+                    ExcMessage(
+                      "MINRES did not solve the mixed saddle-point system in " +
+                      std::to_string(final_iterations) +
+                      " iterations: raise <Solver/Maximum linear "
+                      "iterations>, or check that the scene holds the "
+                      "body (a pressure that nothing determines: an "
+                      "incompressible body held on its whole boundary)."));
       }
+    if (!solved)
+      record.cg_iterations += final_iterations;
     statistics.times.cg += lap(clock);
     remove_contact_terms();
     statistics.times.newton_matrix += lap(clock);
@@ -602,6 +639,44 @@ namespace dualcontact
     if (record.amg_setups > 0)
       cg_iterations_after_setup = final_iterations;
     system->homogeneous_constraints.distribute(direction);
+  }
+
+  template <int dim>
+  void
+  NewtonSolver<dim>::restore_constraint(const ContactSet<dim>         &contact,
+                                        TrilinosWrappers::MPI::Vector &v,
+                                        NewtonStatistics &statistics)
+  {
+    // The step (d, q) with [K, B^T; B, -C] (d, q) = (0, -(B v + b_p - C
+    // p)): onto the constraint with the least change of K's energy, and
+    // with the AMG of the last Newton matrix if there is one (else K's,
+    // which is H without contact terms: every node counts as separated).
+    if (!amg_valid)
+      {
+        linear_solver.initialize(system->stiffness);
+        amg_status.assign(contact.n_local_nodes(), separated);
+        amg_valid     = true;
+        amg_chi_scale = system->chi_scale;
+        statistics.amg_setups += 1;
+      }
+    newton_rhs = 0.;
+    const auto [converged, iterations] =
+      system->pressure->solve(system->stiffness,
+                              linear_solver.amg(),
+                              v,
+                              newton_rhs,
+                              direction,
+                              1e-6,
+                              parameters.max_linear_iterations);
+    AssertThrow(converged,
+                ExcMessage("MINRES did not bring the displacement and the "
+                           "pressure onto the incompressibility constraint "
+                           "in " +
+                           std::to_string(iterations) + " iterations."));
+    system->homogeneous_constraints.distribute(direction);
+    v += direction;
+    system->pressure->update_pressure(direction);
+    statistics.cg_iterations += iterations;
   }
 
   template <int dim>
@@ -630,7 +705,13 @@ namespace dualcontact
     progress = Progress();
 
     NewtonStatistics statistics;
-    double           target = 0.; // absolute gradient tolerance of this call
+    // the mixed formulation's iterates keep B v + b_p = C p, which new
+    // prescribed values or a new mesh break (pressure_coupling.h); what an
+    // inexact Newton solve leaves of it, the next Newton step corrects
+    if (system->pressure != nullptr &&
+        system->pressure->infeasibility(v) > 1e-3)
+      restore_constraint(contact, v, statistics);
+    double target = 0.; // absolute gradient tolerance of this call
     for (unsigned int j = 0;; ++j)
       {
         Timer timer(comm, true);
@@ -675,6 +756,7 @@ namespace dualcontact
 
         solve_for_direction(
           contact,
+          v,
           std::min(0.1, std::max(1e-12, 0.5 * target / gradient_norm)),
           record,
           statistics);
@@ -712,8 +794,19 @@ namespace dualcontact
     Timer timer(v.get_mpi_communicator(), true);
     solver.initialize(system->stiffness);
     TrilinosWrappers::MPI::Vector x(system->load);
-    x          = 0;
-    iterations = solver.solve(system->stiffness, x, system->load);
+    x = 0;
+    if (system->pressure == nullptr)
+      iterations = solver.solve(system->stiffness, x, system->load);
+    else
+      iterations = system->pressure
+                     ->solve(system->stiffness,
+                             solver.amg(),
+                             v,
+                             system->load,
+                             x,
+                             parameters.linear_tolerance,
+                             parameters.max_linear_iterations)
+                     .second;
     timer.stop();
     remove_contact_terms();
     return timer.wall_time();

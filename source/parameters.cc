@@ -346,6 +346,14 @@ namespace dualcontact
     if (geometry.cell_kind == CellKind::simplex)
       GeometryParameters::check_simplices(*this,
                                           "<Geometry/Cell type> is 'simplex'");
+    // the mixed formulation's pair of elements must be stable
+    if (material.formulation == Formulation::mixed)
+      {
+        const std::string refusal =
+          mixed_pair_refusal(geometry.cell_kind, discretization.degree);
+        if (!refusal.empty())
+          throw InputError(refusal, exit_inconsistent);
+      }
   }
 
   EntryValues

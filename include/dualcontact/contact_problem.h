@@ -29,6 +29,7 @@
 #include <dualcontact/discretization.h>
 #include <dualcontact/elasticity.h>
 #include <dualcontact/field_transfer.h>
+#include <dualcontact/mixed_bulk.h>
 #include <dualcontact/newton_solver.h>
 #include <dualcontact/parameters.h>
 #include <dualcontact/probes.h>
@@ -318,6 +319,13 @@ namespace dualcontact
       return report.iterations();
     }
 
+    /** The pressure of the mixed formulation; null in displacements. */
+    const MixedBulk<dim> *
+    mixed_bulk() const
+    {
+      return mixed.get();
+    }
+
     /** The contact nodes of this rank with their multipliers. */
     const ContactSet<dim> &
     contact() const
@@ -413,6 +421,9 @@ namespace dualcontact
     step_failure(const unsigned int step, const double t) const;
     SolveRecord
     solve_linear_elasticity(TrilinosWrappers::MPI::Vector &v);
+    /** The mixed formulation's linear solve from v; MINRES's iterations. */
+    unsigned int
+    solve_mixed_elasticity(TrilinosWrappers::MPI::Vector &v);
     SolveRecord
     solve_contact(TrilinosWrappers::MPI::Vector &v);
     /** Throws if no equilibrium can exist; returns, for each contact node
@@ -494,6 +505,9 @@ namespace dualcontact
     LumpedMass                     mass;     // only with contact
     TrilinosWrappers::MPI::Vector  solution; // ghosted
     ElasticSolver<dim>             elastic_solver;
+    // the pressure of the mixed formulation, its DoFs and its matrices
+    // (mixed_bulk.h); null in displacements
+    std::unique_ptr<MixedBulk<dim>> mixed;
 
     // contact: the nodes and multipliers, the constants r and chi, and the
     // three loops (doc/theory.md §3)

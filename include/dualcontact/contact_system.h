@@ -20,6 +20,8 @@ namespace dualcontact
 {
   using namespace dealii;
 
+  class PressureCoupling; // pressure_coupling.h
+
   /**
    * The size of a contact solution: the nodal Euclidean norms of l1, of the
    * friction thresholds g and of v, the largest entries of l1 and v, the norm
@@ -80,6 +82,10 @@ namespace dualcontact
     // (between two bodies, the normals' discretisation error), and in a
     // scene of several bodies all. Null: none.
     const std::vector<bool> *anchored_at_start = nullptr;
+    // The pressure of the mixed formulation (pressure_coupling.h): K is
+    // then the deviatoric stiffness, each Newton step a saddle-point
+    // solve, and the pressure moves with v. Null in displacements.
+    PressureCoupling *pressure = nullptr;
 
     /** The proximal weight of the step [stress/length^2]. */
     double

@@ -64,7 +64,9 @@ namespace dualcontact
    * the body exerts on the contact at its DoFs: at a DoF that a support
    * constrains and the contact also acts on (a slider's end on Gamma_C
    * with friction) A u - f holds both, and the support's part is
-   * A u - f + B^T lambda.
+   * A u - f + B^T lambda. `pressure_forces` (owned), if given, is the
+   * mixed formulation's B^T p at every DoF (MixedBulk), the rest of the
+   * stress, which A (then the deviatoric stiffness) does not hold.
    */
   template <int dim>
   ReactionRecord
@@ -75,7 +77,8 @@ namespace dualcontact
     const AffineConstraints<double>     &constraints,
     const AffineConstraints<double>     &hanging_node_constraints,
     const TrilinosWrappers::MPI::Vector &solution,
-    const TrilinosWrappers::MPI::Vector *contact_forces = nullptr);
+    const TrilinosWrappers::MPI::Vector *contact_forces  = nullptr,
+    const TrilinosWrappers::MPI::Vector *pressure_forces = nullptr);
 
   /**
    * The potential energy J(u) = 1/2 a(u, u) - f(u) of the ghosted
@@ -174,6 +177,14 @@ namespace dualcontact
               const TrilinosWrappers::MPI::Vector  &rhs,
               const double                          tolerance,
               const unsigned int                    max_iterations) const;
+
+    /** The AMG hierarchy of the last initialize(). */
+    const TrilinosWrappers::PreconditionAMG &
+    amg() const
+    {
+      Assert(preconditioner != nullptr, ExcMessage("initialize() first"));
+      return *preconditioner;
+    }
 
   private:
     const SolverParameters                            &parameters;

@@ -8,20 +8,44 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <dualcontact/cell_kind.h>
 #include <dualcontact/entry_declaration.h>
 
 #include <map>
+#include <string>
 #include <utility>
 
 namespace dualcontact
 {
   using dealii::ParameterHandler;
 
+  /**
+   * How a body is discretised: in displacements alone, or in displacements
+   * and the pressure p = -kappa div u (doc/mixed.md), which does not lock
+   * as nu -> 1/2 and allows nu = 1/2.
+   */
+  enum class Formulation
+  {
+    displacement,
+    mixed
+  };
+
+  /**
+   * Why the mixed formulation does not take displacement degree `degree`
+   * on cells of `kind`, in a sentence; empty where it does (Taylor-Hood
+   * Q_k/Q_{k-1} and P_k/P_{k-1}, k >= 2). k = 1 would pair Q1 with Q0 or
+   * P1 with P0, which fail the inf-sup condition (Q1/Q0 has checkerboard
+   * pressure modes, P1/P0 locks).
+   */
+  std::string
+  mixed_pair_refusal(CellKind kind, unsigned int degree);
+
   /** Isotropic linear elasticity; plane strain in 2D. */
   struct MaterialParameters
   {
-    double youngs_modulus = 1.;
-    double poissons_ratio = 0.3;
+    double      youngs_modulus = 1.;
+    double      poissons_ratio = 0.3;
+    Formulation formulation    = Formulation::displacement;
     // <Material/Materials by id>: the bodies of other materials, material
     // id -> (E, nu); the cells of every other id take the two above
     std::map<dealii::types::material_id, std::pair<double, double>> by_id;
@@ -30,11 +54,38 @@ namespace dualcontact
     lambda() const;
     double
     mu() const;
-    /** The P-wave modulus lambda + 2 mu. */
+    /** 1/kappa = 3 (1 - 2 nu) / E, zero at nu = 1/2. */
     double
-    p_wave_modulus() const
+    inverse_bulk_modulus() const
     {
-      return lambda() + 2. * mu();
+      return 3. * (1. - 2. * poissons_ratio) / youngs_modulus;
+    }
+    /**
+     * The coefficient of div u div v in the displacement block, beside
+     * 2 mu eps(u):eps(v): lambda, or -2 mu/3 in the mixed formulation,
+     * whose displacement block is the deviatoric 2 mu dev eps(u):dev
+     * eps(v) (dev in 3D, also in plane strain) and whose pressure carries
+     * the rest of the stress: sigma = 2 mu eps + block_lambda() tr(eps) I
+     * - p I.
+     */
+    double
+    block_lambda() const
+    {
+      return formulation == Formulation::mixed ? -2. / 3. * mu() : lambda();
+    }
+    /**
+     * The modulus the contact solver scales its augmentation with: the
+     * P-wave modulus lambda + 2 mu, which follows the stiffness of a
+     * displacement discretisation as it locks; in the mixed formulation,
+     * which does not lock, 4 mu (E/(1 - nu^2) at nu = 1/2, the modulus of
+     * an incompressible body's surface; 1.54 E at nu = 0.3 against the
+     * P-wave modulus's 1.35 E).
+     */
+    double
+    contact_modulus() const
+    {
+      return formulation == Formulation::mixed ? 4. * mu() :
+                                                 lambda() + 2. * mu();
     }
 
     /** The material of the cells with material id `id`. */
@@ -47,6 +98,7 @@ namespace dualcontact
         it == by_id.end() ? youngs_modulus : it->second.first;
       material.poissons_ratio =
         it == by_id.end() ? poissons_ratio : it->second.second;
+      material.formulation = formulation;
       return material;
     }
 
@@ -62,7 +114,7 @@ namespace dualcontact
     }
 
     /**
-     * The stiffest of the materials (the largest P-wave modulus): the
+     * The stiffest of the materials (the largest contact_modulus()): the
      * contact solver scales its augmentation with it.
      */
     MaterialParameters
@@ -70,7 +122,7 @@ namespace dualcontact
     {
       MaterialParameters result = of(dealii::numbers::invalid_material_id);
       for (const auto &[id, values] : by_id)
-        if (of(id).p_wave_modulus() > result.p_wave_modulus())
+        if (of(id).contact_modulus() > result.contact_modulus())
           result = of(id);
       return result;
     }
@@ -79,6 +131,9 @@ namespace dualcontact
     declare_parameters(EntryDeclarer &declarer);
     void
     parse_parameters(ParameterHandler &prm);
+    /** nu = 1/2 needs the mixed formulation (InputError). */
+    void
+    check_incompressible(double nu, const std::string &entry) const;
     /** E within the magnitudes the solver represents (exit 5). */
     void
     check_magnitudes() const;

@@ -130,13 +130,25 @@ namespace dualcontact
     /**
      * The Newton direction H d = -grad by CG with AMG to the relative
      * tolerance `forcing`, with H = K + the contact terms at `status`;
-     * reuses the AMG hierarchy where it serves. Fills `direction`.
+     * reuses the AMG hierarchy where it serves. Fills `direction`. In the
+     * mixed formulation the saddle-point system with H, by MINRES, at v.
      */
     void
-    solve_for_direction(const ContactSet<dim> &contact,
-                        const double           forcing,
-                        IterationRecord       &record,
-                        NewtonStatistics      &statistics);
+    solve_for_direction(const ContactSet<dim>               &contact,
+                        const TrilinosWrappers::MPI::Vector &v,
+                        const double                         forcing,
+                        IterationRecord                     &record,
+                        NewtonStatistics                    &statistics);
+
+    /**
+     * In the mixed formulation: move v and the pressure onto the
+     * incompressibility constraint (pressure_coupling.h) by one
+     * saddle-point solve, before the Newton steps, which keep it.
+     */
+    void
+    restore_constraint(const ContactSet<dim>         &contact,
+                       TrilinosWrappers::MPI::Vector &v,
+                       NewtonStatistics              &statistics);
 
     /**
      * grad M_k(v) = K v - b - chi M v^k + sum_s m_s ((z_s)^+ n + T

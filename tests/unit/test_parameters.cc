@@ -417,7 +417,8 @@ TEST_CASE("A value not matching its pattern is rejected with "
 }
 
 TEST_CASE("Poisson's ratio 0.5 (incompressible) is rejected with "
-          "exit_invalid_value",
+          "exit_invalid_value in displacements, naming the mixed "
+          "formulation; above 0.5 in either",
           "[parameters][errors]")
 {
   const CaughtError error =
@@ -425,6 +426,46 @@ TEST_CASE("Poisson's ratio 0.5 (incompressible) is rejected with "
   REQUIRE(error.thrown);
   CHECK(error.code == exit_invalid_value);
   CHECK(contains(error.message, "Poisson's ratio"));
+  CHECK(contains(error.message, "Formulation> = mixed"));
+  const CaughtError by_id = error_reading(
+    "subsection Material\n  set Materials by id = 1: 100, 0.5\nend\n");
+  REQUIRE(by_id.thrown);
+  CHECK(by_id.code == exit_invalid_value);
+  CHECK(contains(by_id.message, "Formulation> = mixed"));
+  for (const std::string formulation : {"displacement", "mixed"})
+    {
+      const CaughtError above =
+        error_reading("subsection Material\n  set Poisson's ratio = 0.5001\n"
+                      "  set Formulation = " +
+                      formulation + "\nend\n");
+      INFO(formulation);
+      REQUIRE(above.thrown);
+      CHECK(above.code == exit_invalid_value);
+      CHECK(contains(above.message, "Poisson's ratio"));
+    }
+  CHECK_FALSE(error_reading("subsection Material\n  set Poisson's ratio = "
+                            "0.5\n  set Formulation = mixed\nend\n"
+                            "subsection Discretization\n  set Polynomial "
+                            "degree = 2\nend\n")
+                .thrown);
+}
+
+TEST_CASE("The mixed formulation refuses degree 1 (Q1/Q0, P1/P0 fail the "
+          "inf-sup condition), naming the degree that works",
+          "[parameters][errors]")
+{
+  for (const std::string cells : {"quadrilateral", "simplex"})
+    {
+      const CaughtError error =
+        error_reading("subsection Material\n  set Formulation = mixed\nend\n"
+                      "subsection Geometry\n  set Cell type = " +
+                      cells + "\nend\n");
+      INFO(cells);
+      REQUIRE(error.thrown);
+      CHECK(error.code == exit_inconsistent);
+      CHECK(contains(error.message, "inf-sup"));
+      CHECK(contains(error.message, "degree> = 2"));
+    }
 }
 
 TEST_CASE("Young's modulus 0 is rejected with exit_invalid_value",
