@@ -22,8 +22,6 @@
 #include <dualcontact/mixed_bulk.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
 
 namespace dualcontact
 {
@@ -353,13 +351,16 @@ namespace dualcontact
   double
   MixedBulk<dim>::infeasibility(const TrilinosWrappers::MPI::Vector &v) const
   {
-    // measured against |B| |v| (largest row sums and entries): B v itself
-    // vanishes at the constraint when nu = 1/2
+    // measured against |B| |v| + |S| |p| (largest row sums and entries;
+    // S = (1/(2 mu) + 1/kappa) M_p has the units of B v / p): B v itself
+    // vanishes at the constraint when nu = 1/2, and v where the body is
+    // confined
     TrilinosWrappers::MPI::Vector Bv(pressure), Cp(pressure);
     coupling.vmult(Bv, v);
     compliance.vmult(Cp, pressure);
     const double size = coupling.linfty_norm() * v.linfty_norm() +
-                        lifting.linfty_norm() + Cp.linfty_norm();
+                        lifting.linfty_norm() +
+                        scaled_mass.linfty_norm() * pressure.linfty_norm();
     Bv += lifting;
     Bv -= Cp;
     hanging.set_zero(Bv);
@@ -438,12 +439,6 @@ namespace dualcontact
             iterations += fgmres_control.last_step();
           }
       }
-    if (std::getenv("MIXED_DEBUG"))
-      std::cerr << "mixed solve: |f| " << f.l2_norm() << " |r_p| "
-                << rhs.block(1).l2_norm() << " rhs_norm " << rhs_norm << " it "
-                << iterations << " conv " << converged << " |d| "
-                << x.block(0).l2_norm() << " |q| " << x.block(1).l2_norm()
-                << " |p| " << pressure.l2_norm() << std::endl;
     direction = x.block(0);
     increment = x.block(1);
     hanging.distribute(increment);

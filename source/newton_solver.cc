@@ -642,44 +642,6 @@ namespace dualcontact
   }
 
   template <int dim>
-  void
-  NewtonSolver<dim>::restore_constraint(const ContactSet<dim>         &contact,
-                                        TrilinosWrappers::MPI::Vector &v,
-                                        NewtonStatistics &statistics)
-  {
-    // The step (d, q) with [K, B^T; B, -C] (d, q) = (0, -(B v + b_p - C
-    // p)): onto the constraint with the least change of K's energy, and
-    // with the AMG of the last Newton matrix if there is one (else K's,
-    // which is H without contact terms: every node counts as separated).
-    if (!amg_valid)
-      {
-        linear_solver.initialize(system->stiffness);
-        amg_status.assign(contact.n_local_nodes(), separated);
-        amg_valid     = true;
-        amg_chi_scale = system->chi_scale;
-        statistics.amg_setups += 1;
-      }
-    newton_rhs = 0.;
-    const auto [converged, iterations] =
-      system->pressure->solve(system->stiffness,
-                              linear_solver.amg(),
-                              v,
-                              newton_rhs,
-                              direction,
-                              1e-6,
-                              parameters.max_linear_iterations);
-    AssertThrow(converged,
-                ExcMessage("MINRES did not bring the displacement and the "
-                           "pressure onto the incompressibility constraint "
-                           "in " +
-                           std::to_string(iterations) + " iterations."));
-    system->homogeneous_constraints.distribute(direction);
-    v += direction;
-    system->pressure->update_pressure(direction);
-    statistics.cg_iterations += iterations;
-  }
-
-  template <int dim>
   NewtonStatistics
   NewtonSolver<dim>::minimise(const ContactSystem                 &system_,
                               const ContactSet<dim>               &contact,
@@ -705,13 +667,7 @@ namespace dualcontact
     progress = Progress();
 
     NewtonStatistics statistics;
-    // the mixed formulation's iterates keep B v + b_p = C p, which new
-    // prescribed values or a new mesh break (pressure_coupling.h); what an
-    // inexact Newton solve leaves of it, the next Newton step corrects
-    if (system->pressure != nullptr &&
-        system->pressure->infeasibility(v) > 1e-3)
-      restore_constraint(contact, v, statistics);
-    double target = 0.; // absolute gradient tolerance of this call
+    double           target = 0.; // absolute gradient tolerance of this call
     for (unsigned int j = 0;; ++j)
       {
         Timer timer(comm, true);

@@ -91,8 +91,12 @@ namespace dualcontact
     void
     add_pressure_forces(TrilinosWrappers::MPI::Vector &force) const override;
 
+    /**
+     * How far (v, p) is from the constraint: |B v + b_p - C p| over |B|
+     * |v| + |b_p| + |S| |p| (largest entries and row sums). Collective.
+     */
     double
-    infeasibility(const TrilinosWrappers::MPI::Vector &v) const override;
+    infeasibility(const TrilinosWrappers::MPI::Vector &v) const;
 
     std::pair<bool, unsigned int>
     solve(const TrilinosWrappers::SparseMatrix    &H,

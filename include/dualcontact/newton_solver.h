@@ -140,15 +140,6 @@ namespace dualcontact
                         IterationRecord                     &record,
                         NewtonStatistics                    &statistics);
 
-    /**
-     * In the mixed formulation: move v and the pressure onto the
-     * incompressibility constraint (pressure_coupling.h) by one
-     * saddle-point solve, before the Newton steps, which keep it.
-     */
-    void
-    restore_constraint(const ContactSet<dim>         &contact,
-                       TrilinosWrappers::MPI::Vector &v,
-                       NewtonStatistics              &statistics);
 
     /**
      * grad M_k(v) = K v - b - chi M v^k + sum_s m_s ((z_s)^+ n + T

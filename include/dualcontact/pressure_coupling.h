@@ -50,13 +50,6 @@ namespace dualcontact
     add_pressure_forces(TrilinosWrappers::MPI::Vector &force) const = 0;
 
     /**
-     * |B v + b_p - C p| over the size of its terms: how far (v, p) is from
-     * the constraint. Collective.
-     */
-    virtual double
-    infeasibility(const TrilinosWrappers::MPI::Vector &v) const = 0;
-
-    /**
      * Solve the system above for d (in `direction`, from zero) and q (kept
      * for advance()), with `correction` the constraint's residual at v,
      * by MINRES preconditioned by diag(`amg`, S^{-1}), S the pressure mass
