@@ -114,8 +114,19 @@ namespace dualcontact
     // evaluation of the gradient per point), the owning rank, and the
     // refinement indicator with adaptive refinement. The contact fields
     // live on Gamma_C only, in the boundary output below.
-    StressPostprocessor<dim> stress(parameters.material);
-    DataOut<dim>             data_out;
+    // (in the mixed formulation with the pressure field, which the output
+    // also shows as its own field)
+    TrilinosWrappers::MPI::Vector pressure;
+    if (mixed)
+      pressure = mixed->ghosted_pressure();
+    StressPostprocessor<dim> stress(
+      parameters.material,
+      mixed ? typename StressPostprocessor<dim>::PressureAt(
+                [&](const auto &cell, const std::vector<Point<dim>> &points) {
+                  return mixed->values_at(mapping, pressure, cell, points);
+                }) :
+              typename StressPostprocessor<dim>::PressureAt());
+    DataOut<dim> data_out;
     data_out.set_flags(flags);
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(
@@ -125,6 +136,8 @@ namespace dualcontact
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_part_of_vector));
     data_out.add_data_vector(solution, stress);
+    if (mixed)
+      data_out.add_data_vector(mixed->dofs(), pressure, "pressure");
 
     Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = static_cast<float>(triangulation.locally_owned_subdomain());

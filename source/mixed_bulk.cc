@@ -465,10 +465,7 @@ namespace dualcontact
     compliance.vmult(h, free);
     h.sadd(-1., 1., constraint_residual);
     hanging.set_zero(h);
-    terms.rho = 2. * pressure.l2_norm();
-    terms.hh  = h * h;
-    terms.hw  = h * w;
-    terms.ww  = w * w;
+    terms.penalty_0 = 2. * pressure.l2_norm() * h.l2_norm();
     return terms;
   }
 
@@ -481,6 +478,32 @@ namespace dualcontact
                                           pressure.get_mpi_communicator());
     ghosted = pressure;
     return ghosted;
+  }
+
+  template <int dim>
+  std::vector<double>
+  MixedBulk<dim>::values_at(
+    const Mapping<dim>                                      &mapping,
+    const TrilinosWrappers::MPI::Vector                     &p,
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const std::vector<Point<dim>>                           &points) const
+  {
+    const typename DoFHandler<dim>::active_cell_iterator p_cell(
+      &dof_handler.get_triangulation(),
+      cell->level(),
+      cell->index(),
+      &dof_handler);
+    Vector<double> local(fe->n_dofs_per_cell());
+    p_cell->get_dof_values(p, local);
+    std::vector<double> values(points.size(), 0.);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const Point<dim> unit =
+          mapping.transform_real_to_unit_cell(cell, points[k]);
+        for (unsigned int i = 0; i < local.size(); ++i)
+          values[k] += local[i] * fe->shape_value(i, unit);
+      }
+    return values;
   }
 
   template <int dim>

@@ -17,8 +17,10 @@ namespace dualcontact
 {
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(
-    const MaterialParameters &material)
+    const MaterialParameters &material,
+    PressureAt                pressure)
       : material(material)
+      , pressure(std::move(pressure))
   {}
 
   template <int dim>
@@ -28,21 +30,27 @@ namespace dualcontact
     std::vector<Vector<double>>                &computed_quantities) const
   {
     // the material of the cell (<Material/Materials by id>)
-    const MaterialParameters here =
-      material.of(inputs.template get_cell<dim>()->material_id());
-    const double lambda = here.lambda(), mu = here.mu();
+    const auto               cell = inputs.template get_cell<dim>();
+    const MaterialParameters here = material.of(cell->material_id());
+    // in the mixed formulation the deviatoric part from u, and -p I
+    const double              lambda = here.block_lambda(), mu = here.mu();
+    const std::vector<double> p_values =
+      pressure ? pressure(cell, inputs.evaluation_points) :
+                 std::vector<double>(inputs.solution_gradients.size(), 0.);
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
         Tensor<2, dim> grad;
         for (unsigned int d = 0; d < dim; ++d)
           grad[d] = inputs.solution_gradients[p][d];
-        const SymmetricTensor<2, dim> sigma =
-          stress_from_gradient(grad, lambda, mu);
+        SymmetricTensor<2, dim> sigma = stress_from_gradient(grad, lambda, mu);
+        for (unsigned int i = 0; i < dim; ++i)
+          sigma[i][i] -= p_values[p];
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             computed_quantities[p](i * dim + j) = sigma[i][j];
         computed_quantities[p](dim * dim) =
-          von_mises_stress(sigma, out_of_plane_stress(grad, lambda));
+          von_mises_stress(sigma,
+                           out_of_plane_stress(grad, lambda) - p_values[p]);
       }
   }
 
@@ -70,7 +78,8 @@ namespace dualcontact
   UpdateFlags
   StressPostprocessor<dim>::get_needed_update_flags() const
   {
-    return update_gradients;
+    return pressure ? update_gradients | update_quadrature_points :
+                      update_gradients;
   }
 
   template <int dim>

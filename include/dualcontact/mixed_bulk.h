@@ -31,6 +31,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dualcontact
 {
@@ -128,6 +129,16 @@ namespace dualcontact
     {
       return dof_handler;
     }
+
+    /**
+     * The values at the real `points` of `cell` (a locally owned or ghost
+     * cell) of the ghosted pressure `p` (ghosted_pressure()).
+     */
+    std::vector<double>
+    values_at(const Mapping<dim>                                      &mapping,
+              const TrilinosWrappers::MPI::Vector                     &p,
+              const typename Triangulation<dim>::active_cell_iterator &cell,
+              const std::vector<Point<dim>> &points) const;
 
     /** p with the ghost entries the output and the probes read. */
     TrilinosWrappers::MPI::Vector

@@ -77,7 +77,17 @@ namespace dualcontact
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
-    explicit StressPostprocessor(const MaterialParameters &material);
+    /**
+     * The pressure p of the mixed formulation at real points of a cell:
+     * the stress is then 2 mu dev eps(u) - p I (material_parameters.h,
+     * block_lambda()). Empty in displacements.
+     */
+    using PressureAt = std::function<std::vector<double>(
+      const typename Triangulation<dim>::active_cell_iterator &,
+      const std::vector<Point<dim>> &)>;
+
+    explicit StressPostprocessor(const MaterialParameters &material,
+                                 PressureAt pressure = PressureAt());
 
     void
     evaluate_vector_field(
@@ -95,6 +105,7 @@ namespace dualcontact
 
   private:
     const MaterialParameters &material;
+    const PressureAt          pressure;
   };
 
   /**

@@ -12,7 +12,6 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -72,27 +71,26 @@ namespace dualcontact
      * programming, in which p is the constraint's multiplier and takes
      * the whole q while v takes alpha d. The merit function is the smooth
      * part above plus rho |h|, h = B v + b_p - C p, an exact penalty
-     * (rho = 2 |p + q| exceeds the multiplier), along which d descends;
-     * a step that only corrects the multiplier (d ~ 0, at nu = 1/2) leaves
-     * it flat and any alpha serves.
+     * (rho = 2 |p + q| exceeds the multiplier), along which d descends. The
+     * penalty follows the linear model h(alpha) = (1 - alpha) h of an
+     * exact solve: what the inexact solve leaves of the second row, like
+     * what it leaves of the first, is the next step's to correct (measured
+     * directly, that residual would outweigh a small h and stall the line
+     * search). A step that only corrects the multiplier (d ~ 0, at nu =
+     * 1/2) leaves the merit flat, and any alpha serves.
      */
     struct LineTerms
     {
-      double slope = 0.; // -p_old.B d: smooth.d holds B^T p_old, not p
-      double rho   = 0.;
-      double hh = 0., hw = 0., ww = 0.; // h.h, h.w, w.w with w = B d
+      double slope     = 0.; // -p_old.B d: smooth.d holds B^T p_old, not p
+      double penalty_0 = 0.; // rho |h| at alpha = 0
 
-      /** rho |h + a w| and its first two derivatives in a. */
+      /** rho |h| |1 - a| and its first two derivatives in a. */
       std::array<double, 3>
       penalty(const double a) const
       {
-        const double n2 = hh + 2. * a * hw + a * a * ww;
-        if (!(n2 > 0.))
-          return {0., 0., 0.};
-        const double n = std::sqrt(n2);
-        return {rho * n,
-                rho * (hw + a * ww) / n,
-                rho * std::max(hh * ww - hw * hw, 0.) / (n2 * n)};
+        return {penalty_0 * std::abs(1. - a),
+                a < 1. ? -penalty_0 : penalty_0,
+                0.};
       }
     };
 
