@@ -111,22 +111,19 @@ namespace dualcontact
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
 
     // The volume: displacement, stress and von Mises stress (from one
-    // evaluation of the gradient per point), the owning rank, and the
+    // evaluation of the gradient per point; in the mixed formulation with
+    // the pressure field, also written), the owning rank, and the
     // refinement indicator with adaptive refinement. The contact fields
     // live on Gamma_C only, in the boundary output below.
-    // (in the mixed formulation with the pressure field, which the output
-    // also shows as its own field)
-    TrilinosWrappers::MPI::Vector pressure;
+    const TrilinosWrappers::MPI::Vector pressure =
+      mixed ? mixed->ghosted_pressure() : TrilinosWrappers::MPI::Vector();
+    typename StressPostprocessor<dim>::PressureAt pressure_at;
     if (mixed)
-      pressure = mixed->ghosted_pressure();
-    StressPostprocessor<dim> stress(
-      parameters.material,
-      mixed ? typename StressPostprocessor<dim>::PressureAt(
-                [&](const auto &cell, const std::vector<Point<dim>> &points) {
-                  return mixed->values_at(mapping, pressure, cell, points);
-                }) :
-              typename StressPostprocessor<dim>::PressureAt());
-    DataOut<dim> data_out;
+      pressure_at = [&](const auto &cell, const auto &points) {
+        return mixed->values_at(mapping, pressure, cell, points);
+      };
+    StressPostprocessor<dim> stress(parameters.material, pressure_at);
+    DataOut<dim>             data_out;
     data_out.set_flags(flags);
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(

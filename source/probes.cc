@@ -324,7 +324,7 @@ namespace dualcontact
           {
             const MaterialParameters here =
               material.of(static_cast<types::material_id>(ids[first[i]]));
-            const double lambda = here.lambda(), mu = here.mu();
+            const double lambda = here.block_lambda(), mu = here.mu();
             value.displacement = u[i];
             value.stress       = stress_from_gradient(grad[i], lambda, mu);
             value.stress_zz    = out_of_plane_stress(grad[i], lambda);

@@ -58,10 +58,12 @@ namespace dualcontact
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            // the cell's material (<Material/Materials by id>)
+            // the cell's material (<Material/Materials by id>); in the
+            // mixed formulation the stress of u alone, its deviatoric part
+            // (the term leaves the pressure field out, doc/mixed.md)
             const MaterialParameters here   = material.of(cell->material_id());
             const double             E      = here.youngs_modulus;
-            const double             lame_l = here.lambda();
+            const double             lame_l = here.block_lambda();
             const double             lame_m = here.mu();
             double                   sum    = 0.;
             for (const unsigned int f : cell->face_indices())
@@ -218,7 +220,7 @@ namespace dualcontact
                        fe_face.quadrature_point_indices())
                     {
                       const SymmetricTensor<2, dim> stress =
-                        here.lambda() * trace(strain[q]) *
+                        here.block_lambda() * trace(strain[q]) *
                           unit_symmetric_tensor<dim>() +
                         2. * here.mu() * strain[q];
                       integral +=

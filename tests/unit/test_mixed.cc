@@ -186,3 +186,23 @@ TEST_CASE("Incompressible patch in 3D on hexahedra: uniaxial and "
     CHECK(p_error <= 1e-10);
   }
 }
+
+TEST_CASE("Hertz at nu = 1/2 (prm/hertz_incompressible.prm): Q2/Q1 gives "
+          "the peak pressure and the half-width within 1 %, the load "
+          "balanced",
+          "[mixed]")
+{
+  const SceneRun<2>  run("hertz_incompressible.prm",
+                        "subsection Refinement\n  set Number of cycles = "
+                         "1\nend\n");
+  const CycleResult &r = run.last();
+  INFO("peak " << r.zone.peak_pressure_error << ", half-width "
+               << r.zone.half_width_error << ", pressure L2 "
+               << r.zone.pressure_error << ", " << r.mesh.n_dofs << " DoFs, "
+               << r.solve.cg_iterations << " MINRES over "
+               << r.solve.newton_steps << " Newton steps");
+  CHECK(std::abs(r.zone.peak_pressure_error) <= 0.01);
+  CHECK(std::abs(r.zone.half_width_error) <= 0.01);
+  CHECK(r.zone.pressure_error <= 0.01);
+  CHECK(r.zone.contact_force == Approx(8.630749048323608).epsilon(1e-8));
+}
