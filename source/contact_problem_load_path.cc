@@ -155,9 +155,10 @@ namespace dualcontact
   ContactProblem<dim>::solve_step(StepControl &control, CycleResult &result)
   {
     // the state the step starts from, kept for a retry: the step's first
-    // guess and the multipliers, threshold and predictor it starts from
+    // guess and the multipliers, threshold, predictor and (in the mixed
+    // formulation) pressure it starts from
     const bool adaptive = parameters.load_path.adaptive_steps;
-    TrilinosWrappers::MPI::Vector       start_solution, start_v;
+    TrilinosWrappers::MPI::Vector       start_solution, start_v, start_p;
     std::unique_ptr<ContactSet<dim>>    start_contact;
     std::unique_ptr<StepPredictor<dim>> start_predictor;
     const bool                          start_carried = carried;
@@ -167,6 +168,8 @@ namespace dualcontact
         start_v         = carried_v;
         start_contact   = std::make_unique<ContactSet<dim>>(contact_set);
         start_predictor = std::make_unique<StepPredictor<dim>>(predictor);
+        if (mixed)
+          start_p = mixed->pressure;
       }
     const unsigned int step = result.step.step;
     for (;;)
@@ -209,11 +212,13 @@ namespace dualcontact
           report.cut_step(result.step,
                           why.substr(0, why.find(" Likely causes")),
                           control.next_time());
-          solution        = start_solution;
-          carried_v       = start_v;
-          carried         = start_carried;
-          contact_set     = *start_contact;
-          predictor       = *start_predictor;
+          solution    = start_solution;
+          carried_v   = start_v;
+          carried     = start_carried;
+          contact_set = *start_contact;
+          predictor   = *start_predictor;
+          if (mixed)
+            mixed->pressure = start_p;
           indicator_valid = false;
           same_stiffness  = false; // a new AMG: the failed try's is no guide
           CycleResult retry;       // on the step's mesh, as carried to it

@@ -6,7 +6,8 @@
 // complement, and the MINRES solve of the saddle-point system. The
 // displacement's DoFHandler, constraints and matrix are the displacement
 // formulation's, with the deviatoric stiffness: the contact set, the
-// output, the probes and the load path work on them unchanged.
+// multipliers, the displacement's output and the load path work on them
+// unchanged.
 #ifndef dualcontact_mixed_bulk_h
 #define dualcontact_mixed_bulk_h
 
@@ -61,7 +62,7 @@ namespace dualcontact
      * The pressure DoFs of the present mesh, their hanging-node
      * constraints, and the patterns of B (rows: pressure, columns: the
      * displacement DoFs of `u_dofs` under `u_constraints`), C and S. p
-     * becomes zero (transfer() carries it across a refinement).
+     * becomes zero (finish_transfer() carries it across a refinement).
      */
     void
     setup(const DoFHandler<dim>           &u_dofs,

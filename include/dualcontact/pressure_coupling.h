@@ -88,9 +88,8 @@ namespace dualcontact
       std::array<double, 3>
       penalty(const double a) const
       {
-        return {penalty_0 * std::abs(1. - a),
-                a < 1. ? -penalty_0 : penalty_0,
-                0.};
+        return {
+          {penalty_0 * std::abs(1. - a), a < 1. ? -penalty_0 : penalty_0, 0.}};
       }
     };
 
