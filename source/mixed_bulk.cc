@@ -22,6 +22,7 @@
 #include <dualcontact/mixed_bulk.h>
 
 #include <cmath>
+#include <functional>
 
 namespace dualcontact
 {
@@ -96,6 +97,86 @@ namespace dualcontact
       const TrilinosWrappers::PreconditionAMG &amg;
       const TrilinosWrappers::PreconditionIC  &mass;
     };
+    // One Krylov solve of the saddle-point system from x, to `tolerance`
+    // relative to the right-hand side and on until `accurate` holds (each
+    // MINRES iterate is tested once the tolerance is met); returns whether
+    // it converged and its iterations.
+    std::pair<bool, unsigned int>
+    krylov_solve(const SaddlePointOperator                      &matrix,
+                 const BlockDiagonalPreconditioner              &preconditioner,
+                 const BlockVector                              &rhs,
+                 BlockVector                                    &x,
+                 const double                                    tolerance,
+                 const unsigned int                              max_iterations,
+                 const std::function<bool(const BlockVector &)> &accurate)
+    {
+      // MINRES measures the residual in the preconditioner's norm, which
+      // needs a positive definite preconditioner. An AMG kept from an earlier
+      // Newton matrix need not be one (r.P r < 0 seen on a 2D Coulomb load
+      // step once the statuses had changed), and then FGMRES, which takes
+      // any preconditioner, solves instead.
+      BlockVector preconditioned(rhs);
+      preconditioner.vmult(preconditioned, rhs);
+      const double rhs_energy = preconditioned * rhs;
+      if (rhs.l2_norm() == 0. || max_iterations == 0)
+        return {max_iterations > 0, 0};
+      bool         converged  = rhs_energy > 0.;
+      unsigned int iterations = 0;
+      if (converged)
+        {
+          SolverControl             control(max_iterations,
+                                tolerance * std::sqrt(rhs_energy),
+                                false,
+                                false);
+          SolverMinRes<BlockVector> minres(control);
+          minres.connect([&](const unsigned int,
+                             const double       residual,
+                             const BlockVector &iterate) {
+            return residual > control.tolerance() || accurate(iterate) ?
+                     SolverControl::success :
+                     SolverControl::iterate;
+          });
+          const BlockVector start(x);
+          try
+            {
+              minres.solve(matrix, x, rhs, preconditioner);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              converged = false;
+            }
+          iterations = std::min(control.last_step(), max_iterations);
+          if (!std::isfinite(x.l2_norm()))
+            {
+              x         = start;
+              converged = false;
+            }
+        }
+      // deal.II's MINRES divides by zero when its Krylov space holds the
+      // exact solution before the tolerance is met (a patch test's uniform
+      // state: a few iterations); FGMRES takes over then, where MINRES does
+      // not converge, and where it cannot be used.
+      if (!converged)
+        {
+          SolverControl             control(max_iterations,
+                                tolerance * rhs.l2_norm(),
+                                false,
+                                false);
+          SolverFGMRES<BlockVector> fgmres(control);
+          converged = true;
+          try
+            {
+              fgmres.solve(matrix, x, rhs, preconditioner);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              converged = false;
+            }
+          iterations += control.last_step();
+        }
+      return {converged, iterations};
+    }
+
   } // namespace
 
   template <int dim>
@@ -393,56 +474,68 @@ namespace dualcontact
 
     const SaddlePointOperator         matrix(H, coupling, compliance);
     const BlockDiagonalPreconditioner preconditioner(amg, mass_factors);
-    // MINRES measures the residual in the preconditioner's norm
-    BlockVector preconditioned(rhs);
-    preconditioner.vmult(preconditioned, rhs);
-    const double rhs_norm   = std::sqrt(std::max(preconditioned * rhs, 0.));
-    bool         converged  = true;
+    // The line search measures the penalty on the constraint at the step's
+    // end (update_pressure()), so what the inexact solve leaves of the
+    // second row must be small against what the step gains: MINRES goes on
+    // past the tolerance until it is (accurate_enough()), and FGMRES, whose
+    // iterate is formed only at the end, at a tolerance 10 times smaller.
+    // Left at the first tolerance, a 2D Coulomb load step at nu = 1/2
+    // cycled between two iterates, each claiming the other's residual as
+    // progress.
+    const auto accurate = [&](const BlockVector &iterate) {
+      return accurate_enough(H, iterate);
+    };
     unsigned int iterations = 0;
-    if (rhs_norm > 0.)
+    bool         converged  = true;
+    for (double relative = tolerance;; relative *= 1e-1)
       {
-        SolverControl             control(max_iterations,
-                              tolerance * rhs_norm,
-                              false,
-                              false);
-        SolverMinRes<BlockVector> minres(control);
-        try
-          {
-            minres.solve(matrix, x, rhs, preconditioner);
-          }
-        catch (const SolverControl::NoConvergence &)
-          {
-            converged = false;
-          }
-        iterations = std::min(control.last_step(), max_iterations);
-        // deal.II's MINRES divides by zero when its Krylov space holds the
-        // exact solution before the tolerance is met (a patch test's
-        // uniform state: a few iterations); FGMRES takes over then, and
-        // where MINRES does not converge.
-        if (!converged || !std::isfinite(x.l2_norm()))
-          {
-            x = 0;
-            SolverControl             fgmres_control(max_iterations,
-                                         tolerance * rhs.l2_norm(),
-                                         false,
-                                         false);
-            SolverFGMRES<BlockVector> fgmres(fgmres_control);
-            converged = true;
-            try
-              {
-                fgmres.solve(matrix, x, rhs, preconditioner);
-              }
-            catch (const SolverControl::NoConvergence &)
-              {
-                converged = false;
-              }
-            iterations += fgmres_control.last_step();
-          }
+        const auto [done, steps] =
+          krylov_solve(matrix,
+                       preconditioner,
+                       rhs,
+                       x,
+                       relative,
+                       max_iterations - std::min(iterations, max_iterations),
+                       accurate);
+        iterations += steps;
+        converged = done;
+        if (!converged || relative < 1e-12 || iterations >= max_iterations ||
+            accurate(x))
+          break;
       }
     direction = x.block(0);
     increment = x.block(1);
     hanging.distribute(increment);
     return {converged, iterations};
+  }
+
+  template <int dim>
+  bool
+  MixedBulk<dim>::accurate_enough(const TrilinosWrappers::SparseMatrix &H,
+                                  const BlockVector                    &x) const
+  {
+    // With a = h - C q and e = a + B d the second row's residual, the merit
+    // function's slope along d is at most
+    //   -d.H d + |e1.d| - |p + q| |a| + 3 |p + q| |e|
+    // (penalty weight 2 |p + q|, e1 the first row's residual), so a
+    // residual with 3 |e| <= |a| + d.H d / (2 |p + q|) keeps d a descent
+    // direction as the first row's tolerance does without a pressure.
+    const TrilinosWrappers::MPI::Vector &d = x.block(0);
+    TrilinosWrappers::MPI::Vector q(x.block(1)), a(pressure), e(pressure);
+    hanging.set_zero(q);
+    compliance.vmult(a, q);
+    a.sadd(-1., 1., constraint_residual);
+    hanging.set_zero(a);
+    coupling.vmult(e, d);
+    hanging.set_zero(e);
+    e += a;
+    TrilinosWrappers::MPI::Vector Hd(d);
+    H.vmult(Hd, d);
+    q += pressure;
+    hanging.set_zero(q);
+    const double multiplier = q.l2_norm();
+    return 3. * multiplier * e.l2_norm() <=
+           multiplier * a.l2_norm() + 0.5 * (d * Hd);
   }
 
   template <int dim>
@@ -458,14 +551,20 @@ namespace dualcontact
     hanging.set_zero(free);
     terms.slope = -(free * w);
     pressure += increment;
-    // h at the start of the line, with the new p: h - C q
+    // the constraint's residual along the line, a + alpha B d, with
+    // a = h - C q at the start of the line (the new p)
     free = increment;
     hanging.set_zero(free);
-    TrilinosWrappers::MPI::Vector h(pressure);
-    compliance.vmult(h, free);
-    h.sadd(-1., 1., constraint_residual);
-    hanging.set_zero(h);
-    terms.penalty_0 = 2. * pressure.l2_norm() * h.l2_norm();
+    TrilinosWrappers::MPI::Vector a(pressure);
+    compliance.vmult(a, free);
+    a.sadd(-1., 1., constraint_residual);
+    hanging.set_zero(a);
+    free = pressure;
+    hanging.set_zero(free);
+    terms.weight = 2. * free.l2_norm();
+    terms.aa     = a * a;
+    terms.ab     = a * w;
+    terms.bb     = w * w;
     return terms;
   }
 

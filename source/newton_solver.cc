@@ -580,17 +580,14 @@ namespace dualcontact
       if (system->pressure == nullptr)
         return linear_solver.try_solve(
           H, direction, newton_rhs, forcing, max_iterations);
-      // MINRES measures the residual of both blocks in the
-      // preconditioner's norm, which lets the displacement's part of it
-      // stay large: at the forcing CG takes (0.1) the Newton iteration of
-      // a 2D Coulomb scene at nu = 1/2 (prm/cattaneo_mindlin.prm mixed)
-      // stalls at a gradient of 0.1; at 1e-3 it converges
+      // (at the same forcing, and on until the second row is accurate
+      // enough for the line search: MixedBulk::solve())
       return system->pressure->solve(H,
                                      linear_solver.amg(),
                                      v,
                                      newton_rhs,
                                      direction,
-                                     std::min(forcing, 1e-3),
+                                     forcing,
                                      max_iterations);
     };
     if (record.amg_setups == 0)

@@ -21,6 +21,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -149,6 +150,14 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector pressure;
 
   private:
+    /**
+     * Whether the solve's second-row residual is small enough for the
+     * line search's measured penalty (solve()).
+     */
+    bool
+    accurate_enough(const TrilinosWrappers::SparseMatrix     &H,
+                    const TrilinosWrappers::MPI::BlockVector &x) const;
+
     /** The pressure DoFHandler's iterator of a displacement cell. */
     typename DoFHandler<dim>::active_cell_iterator
     pressure_cell(

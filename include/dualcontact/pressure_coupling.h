@@ -71,25 +71,29 @@ namespace dualcontact
      * programming, in which p is the constraint's multiplier and takes
      * the whole q while v takes alpha d. The merit function is the smooth
      * part above plus rho |h|, h = B v + b_p - C p, an exact penalty
-     * (rho = 2 |p + q| exceeds the multiplier), along which d descends. The
-     * penalty follows the linear model h(alpha) = (1 - alpha) h of an
-     * exact solve: what the inexact solve leaves of the second row, like
-     * what it leaves of the first, is the next step's to correct (measured
-     * directly, that residual would outweigh a small h and stall the line
-     * search). A step that only corrects the multiplier (d ~ 0, at nu =
-     * 1/2) leaves the merit flat, and any alpha serves.
+     * (rho = 2 |p + q| exceeds the multiplier), along which d descends.
+     * Along the line h(alpha) = a + alpha b with a = h - C q and b = B d,
+     * measured: an exact solve has b = -a, and solve() leaves little
+     * enough of the second row's residual a + b for d to descend.
      */
     struct LineTerms
     {
-      double slope     = 0.; // -p_old.B d: smooth.d holds B^T p_old, not p
-      double penalty_0 = 0.; // rho |h| at alpha = 0
+      double slope  = 0.; // -p_old.B d: smooth.d holds B^T p_old, not p
+      double weight = 0.; // rho
+      double aa = 0., ab = 0., bb = 0.; // a.a, a.b, b.b
 
-      /** rho |h| |1 - a| and its first two derivatives in a. */
+      /** rho |a + alpha b| and its first two derivatives in alpha. */
       std::array<double, 3>
-      penalty(const double a) const
+      penalty(const double alpha) const
       {
-        return {
-          {penalty_0 * std::abs(1. - a), a < 1. ? -penalty_0 : penalty_0, 0.}};
+        const double norm =
+          std::sqrt(std::max(aa + alpha * (2. * ab + alpha * bb), 0.));
+        if (!(norm > 1e-14 * std::sqrt(aa + bb)))
+          return {{0., weight * std::sqrt(bb), 0.}}; // from the right
+        const double slope = (ab + alpha * bb) / norm;
+        return {{weight * norm,
+                 weight * slope,
+                 weight * std::max(bb - slope * slope, 0.) / norm}};
       }
     };
 
