@@ -21,6 +21,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "cattaneo.h"
 #include "scene_run.h"
 #include "test_tools.h"
 
@@ -29,22 +30,6 @@ using namespace dualcontact_test;
 
 namespace
 {
-  /** (x, l1, l2) of every contact node after the last step, sorted by x. */
-  std::vector<std::array<double, 3>>
-  tractions(const Run &run)
-  {
-    const ContactSet<2> &c = run.problem->contact();
-    std::vector<double>  local;
-    for (unsigned int s = 0; s < c.n_local_nodes(); ++s)
-      local.insert(local.end(), {c.nodes[s].position[0], c.l1[s], c.l2[s][0]});
-    std::vector<std::array<double, 3>> all;
-    for (const auto &part : Utilities::MPI::all_gather(run.comm, local))
-      for (std::size_t i = 0; i + 2 < part.size(); i += 3)
-        all.push_back({{part[i], part[i + 1], part[i + 2]}});
-    std::sort(all.begin(), all.end());
-    return all;
-  }
-
   /**
    * The last step's tractions of two runs on the same mesh, node by node:
    * the largest difference of l1 or l2, and p0, the largest l1 of `b`.
@@ -219,35 +204,6 @@ TEST_CASE("Spence, coupled: a Hertz contact with friction at nu = 0.3 "
         std::abs(extrapolated - uncoupled));
 }
 
-namespace
-{
-  /**
-   * The smallest spacing of contact nodes with |x| < a: the contact element
-   * at degree 1, its shortest Gauss-Lobatto interval at degree k.
-   */
-  double
-  contact_element(const Run &run, const double a)
-  {
-    std::vector<double> x;
-    for (const auto &node : tractions(run))
-      x.push_back(node[0]);
-    double h = a;
-    for (std::size_t i = 1; i < x.size(); ++i)
-      if (std::abs(x[i]) < a)
-        h = std::min(h, x[i] - x[i - 1]);
-    return h;
-  }
-
-  /** Hertz's half-width of a cylinder R = 1 pressed by P (plane strain). */
-  double
-  hertz_half_width(const double P, const Parameters &parameters)
-  {
-    const double nu     = parameters.material.poissons_ratio;
-    const double E_star = parameters.material.youngs_modulus / (1. - nu * nu);
-    return std::sqrt(4. * P / (numbers::PI * E_star));
-  }
-} // namespace
-
 TEST_CASE("Cattaneo-Mindlin and Mindlin-Deresiewicz: a cylinder pressed, "
           "sheared to Q*, back to -Q* and to Q* again: the stick zone of "
           "every step",
@@ -362,75 +318,47 @@ TEST_CASE("Cattaneo-Mindlin at nu = 0.49 with elements of degree 3: the "
   const auto   Q    = [&](const unsigned int n) {
     return sign * steps[n].reactions.on_id.at(1)[0];
   };
-  const double P  = steps[0].zone.contact_force;
-  const double a  = hertz_half_width(P, run.parameters);
-  const double p0 = 2. * P / (numbers::PI * a);
+  const double P = steps[0].zone.contact_force;
+  const double a = hertz_half_width(P, run.parameters);
   // the smallest spacing of the support points on Gamma_C, 0.28 of a
   // contact element at degree 3 (Gauss-Lobatto points 0, 0.28, 0.72, 1)
   const double h = contact_element(run, a);
   INFO("a = " << a << ", node spacing " << h
               << ", Q*/(F P) = " << Q(1) / (F * P));
   CHECK(Q(1) / (F * P) > 0.4);
-  // q_d(x) = F (p0/a) sqrt(d^2 - x^2), the branches' superpositions
-  const auto q_d = [&](const double x, const double d) {
-    return F * p0 / a * std::sqrt(std::max(d * d - x * x, 0.));
-  };
   for (unsigned int n = 1; n < 5; ++n)
     {
-      const double Pn = steps[n].zone.contact_force;
-      const double an = hertz_half_width(Pn, run.parameters);
-      double       c  = 0.;
-      if (n == 1) // loading from 0 to Q*
-        c = an * std::sqrt(1. - Q(n) / (F * Pn));
-      else if (n <= 3) // unloading from Q* (step 2) to 0 and to -Q*
-        c = an * std::sqrt(1. - (Q(1) - Q(n)) / (2. * F * Pn));
-      else // reloading from -Q* (step 4)
-        c = an * std::sqrt(1. - (Q(n) - Q(3)) / (2. * F * Pn));
+      // loading to Q* (step 2), unloading to 0 and to -Q*, reloading from
+      // -Q* (step 4)
+      const CattaneoState state(n == 1 ? CattaneoState::loading :
+                                n <= 3 ? CattaneoState::unloading :
+                                         CattaneoState::reloading,
+                                steps[n].zone.contact_force,
+                                Q(n),
+                                n <= 3 ? Q(1) : Q(3),
+                                F,
+                                run.parameters);
       const double measured = steps[n].zone.stick_half_width;
-      INFO("step " << n + 1 << ": Q/(F P) = " << Q(n) / (F * Pn)
-                   << ", stick half-width " << measured << " against " << c
-                   << " (" << (measured - c) / h << " node spacings)");
+      INFO("step " << n + 1
+                   << ": Q/(F P) = " << Q(n) / (F * steps[n].zone.contact_force)
+                   << ", stick half-width " << measured << " against "
+                   << state.c << " (" << (measured - state.c) / h
+                   << " node spacings)");
       // within a node spacing, so within a third of a contact element
-      CHECK(std::abs(measured - c) <= h);
+      CHECK(std::abs(measured - state.c) <= h);
 
       // the tractions of contact_step_00<n+1>.csv against the branch's
       // superposition, RMS over |x| < a with the nodal weights (pointwise,
       // the square-root kinks at the zone edges put up to 0.2 F p0 on the
       // node next to each)
-      std::function<double(double)> q;
-      if (n == 1)
-        q = [&](double x) { return q_d(x, an) - q_d(x, c); };
-      else if (n <= 3)
-        {
-          const double c_star = an * std::sqrt(1. - Q(1) / (F * Pn));
-          q                   = [&, c, c_star](double x) {
-            return -q_d(x, an) + 2. * q_d(x, c) - q_d(x, c_star);
-          };
-        }
-      else
-        {
-          const double c_star = an * std::sqrt(1. + Q(3) / (F * Pn));
-          q                   = [&, c, c_star](double x) {
-            return q_d(x, an) - 2. * q_d(x, c) + q_d(x, c_star);
-          };
-        }
-      const CsvFile table(run.directory + "/contact_step_00" +
-                            std::to_string(n + 1) + ".csv",
-                          run.comm);
-      double        sum = 0., measure = 0.;
-      for (unsigned int i = 0; i < table.rows(); ++i)
-        {
-          const double x = table.value(i, "x");
-          if (std::abs(x) >= an)
-            continue;
-          const double w = table.value(i, "weight");
-          const double e = sign * table.value(i, "l2") - q(x);
-          sum += w * e * e;
-          measure += w;
-        }
-      const double rms = std::sqrt(sum / measure) / (F * p0);
+      const auto [rms, measure] =
+        traction_rms(run.directory + "/contact_step_00" +
+                       std::to_string(n + 1) + ".csv",
+                     run.comm,
+                     state,
+                     sign);
       INFO("step " << n + 1 << ": RMS traction error " << rms << " F p0");
-      CHECK(measure > 1.9 * an);
+      CHECK(measure > 1.9 * state.a);
       CHECK(rms <= 0.05);
     }
 }
