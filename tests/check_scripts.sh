@@ -20,8 +20,8 @@ for script in "$source_dir"/benchmarks/*.sh "$source_dir"/contrib/*.sh \
   bash -n "$script" 2> /dev/null || fail "${script#"$source_dir"/} does not parse: $(bash -n "$script" 2>&1 | head -1)"
 done
 missing="$(mktemp -u)"
-for name in benchmark_hertz benchmark_load_path degree_sweep solver_limits_sweep work_precision \
-  work_precision_degree; do
+for name in benchmark_hertz benchmark_load_path degree_sweep locking_study mixed_solver_counts solver_limits_sweep \
+  work_precision work_precision_degree; do
   message="$(DUALCONTACT="$missing" bash "$source_dir/benchmarks/$name.sh" 2>&1 > /dev/null)"
   status=$?
   [ "$status" -eq 2 ] || fail "benchmarks/$name.sh without a program: exit status $status, not 2"
