@@ -129,12 +129,19 @@ namespace dualcontact
                                 false,
                                 false);
           SolverMinRes<BlockVector> minres(control);
-          minres.connect([&](const unsigned int,
+          // past the tolerance, on while the iterate is not accurate
+          // enough: up to the control's limit (the control itself stops
+          // at the tolerance), and not past a residual of exactly zero,
+          // where MINRES has nothing left to improve
+          minres.connect([&](const unsigned int step,
                              const double       residual,
                              const BlockVector &iterate) {
-            return residual > control.tolerance() || accurate(iterate) ?
-                     SolverControl::success :
-                     SolverControl::iterate;
+            if (residual > control.tolerance() || residual == 0.)
+              return SolverControl::success;
+            if (step >= control.max_steps())
+              return SolverControl::failure;
+            return accurate(iterate) ? SolverControl::success :
+                                       SolverControl::iterate;
           });
           const BlockVector start(x);
           try
@@ -520,6 +527,8 @@ namespace dualcontact
     // (penalty weight 2 |p + q|, e1 the first row's residual), so a
     // residual with 3 |e| <= |a| + d.H d / (2 |p + q|) keeps d a descent
     // direction as the first row's tolerance does without a pressure.
+    // Below 1e-10 of the second row's terms the residual is round-off,
+    // which no iteration reduces: it counts as accurate there.
     const TrilinosWrappers::MPI::Vector &d = x.block(0);
     TrilinosWrappers::MPI::Vector q(x.block(1)), a(pressure), e(pressure);
     hanging.set_zero(q);
@@ -528,14 +537,17 @@ namespace dualcontact
     hanging.set_zero(a);
     coupling.vmult(e, d);
     hanging.set_zero(e);
+    const double step_size = e.l2_norm(); // |B d|
     e += a;
     TrilinosWrappers::MPI::Vector Hd(d);
     H.vmult(Hd, d);
     q += pressure;
     hanging.set_zero(q);
     const double multiplier = q.l2_norm();
-    return 3. * multiplier * e.l2_norm() <=
-           multiplier * a.l2_norm() + 0.5 * (d * Hd);
+    const double residual   = e.l2_norm();
+    return 3. * multiplier * residual <=
+             multiplier * a.l2_norm() + 0.5 * (d * Hd) ||
+           residual <= 1e-10 * (a.l2_norm() + step_size);
   }
 
   template <int dim>
