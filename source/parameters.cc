@@ -360,12 +360,6 @@ namespace dualcontact
                            "the pressure field yet, and their stress would "
                            "lack it. Read the stress from the vtu.",
                            exit_inconsistent);
-        if (output.checkpoint_interval > 0)
-          throw InputError("<Output/Checkpoint interval> with <Material/"
-                           "Formulation> = mixed: the checkpoints do not "
-                           "carry the pressure field yet, so a resumed path "
-                           "would not give the same numbers. Set it to 0.",
-                           exit_inconsistent);
       }
   }
 
