@@ -659,6 +659,17 @@ namespace dualcontact
     checkpoint_transfer.reset();
   }
 
+  template <int dim>
+  PressureAt<dim>
+  MixedBulk<dim>::pressure_at(const Mapping<dim> &mapping) const
+  {
+    const auto p =
+      std::make_shared<const TrilinosWrappers::MPI::Vector>(ghosted_pressure());
+    return [this, &mapping, p](const auto &cell, const auto &points) {
+      return values_at(mapping, *p, cell, points);
+    };
+  }
+
   template class MixedBulk<2>;
   template class MixedBulk<3>;
 } // namespace dualcontact

@@ -30,6 +30,7 @@
 #include <dualcontact/cell_kind.h>
 #include <dualcontact/field_transfer.h>
 #include <dualcontact/material_parameters.h>
+#include <dualcontact/postprocess.h>
 #include <dualcontact/pressure_coupling.h>
 
 #include <memory>
@@ -158,6 +159,14 @@ namespace dualcontact
     /** p with the ghost entries the output and the probes read. */
     TrilinosWrappers::MPI::Vector
     ghosted_pressure() const;
+
+    /**
+     * values_at() of the present p as a function of a cell and real
+     * points, which keeps its own ghosted copy of p (the stress of the
+     * output and of the refinement indicator).
+     */
+    PressureAt<dim>
+    pressure_at(const Mapping<dim> &mapping) const;
 
     /** The owned pressure, for a transfer or a checkpoint to set. */
     TrilinosWrappers::MPI::Vector pressure;
