@@ -5,6 +5,7 @@
 
 #include <dualcontact/checkpoint.h>
 
+#include <algorithm>
 #include <boost/crc.hpp>
 #include <cctype>
 #include <cmath>
@@ -295,14 +296,24 @@ namespace dualcontact
   } // namespace
 
   std::string
-  first_difference(const std::string           &now,
-                   const std::string           &saved,
-                   const std::set<std::string> &ignored)
+  first_difference(const std::string              &now,
+                   const std::string              &saved,
+                   const std::set<std::string>    &ignored,
+                   const std::vector<std::string> &first)
   {
-    const auto                         entries_now = entries_of(now);
+    auto                               entries_now = entries_of(now);
     std::map<std::string, std::string> entries_saved;
     for (const auto &[name, value] : entries_of(saved))
       entries_saved[name] = value;
+    // (a stable partition keeps the others in their order)
+    const auto rank = [&first](const std::string &name) {
+      return std::find(first.begin(), first.end(), name) - first.begin();
+    };
+    std::stable_sort(entries_now.begin(),
+                     entries_now.end(),
+                     [&rank](const auto &a, const auto &b) {
+                       return rank(a.first) < rank(b.first);
+                     });
     for (const auto &[name, value] : entries_now)
       {
         if (ignored.count(name))

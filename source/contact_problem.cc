@@ -72,7 +72,8 @@ namespace dualcontact
       , newton(parameters.solver, elastic_solver)
       , uzawa(parameters.solver, newton)
       , threshold_iteration(parameters.friction, uzawa)
-      , probes(parameters.output.probe_points)
+      , probes(parameters.output.probe_points,
+               parameters.material.formulation == Formulation::mixed)
   {
     if (parameters.material.formulation == Formulation::mixed)
       mixed =
@@ -554,20 +555,20 @@ namespace dualcontact
     const std::set<types::boundary_id> contact_ids =
       scene.effects().contact ? scene.contact_ids() :
                                 std::set<types::boundary_id>();
-    indicator =
-      compute_indicator<dim>({mapping,
-                              dof_handler,
-                              solution,
-                              contact_set,
-                              contact_ids,
-                              parameters,
-                              parameters.refinement.values,
-                              [this] {
-                                TrilinosWrappers::MPI::Vector multipliers,
-                                  threshold;
-                                multiplier_fields(multipliers, threshold);
-                                return multipliers;
-                              }});
+    indicator = compute_indicator<dim>(
+      {mapping,
+       dof_handler,
+       solution,
+       contact_set,
+       contact_ids,
+       parameters,
+       parameters.refinement.values,
+       [this] {
+         TrilinosWrappers::MPI::Vector multipliers, threshold;
+         multiplier_fields(multipliers, threshold);
+         return multipliers;
+       },
+       mixed ? mixed->pressure_at(mapping) : PressureAt<dim>()});
     return indicator;
   }
 

@@ -1,7 +1,7 @@
 // ContactProblem, checkpoint and restart of a load path (doc/theory.md §11,
 // "Restart"): the mesh with u, u^{n-1}, the multipliers and the threshold
-// on its cells in p4est's files, and the path's scalars in state.txt
-// (checkpoint.h).
+// (and in the mixed formulation p) on its cells in p4est's files, and the
+// path's scalars in state.txt (checkpoint.h).
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/distributed/solution_transfer.h>
@@ -18,6 +18,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace dualcontact
 {
@@ -30,6 +31,11 @@ namespace dualcontact
       "Output/Verbosity",
       "Output/Print timing",
       "Output/Checkpoint interval"};
+    // the entries named first where they differ, whatever else does: the
+    // formulation decides which fields a checkpoint holds (the mixed
+    // formulation's pressure beside the displacement)
+    const std::vector<std::string> entries_compared_first = {
+      "Material/Formulation"};
 
     template <int dim>
     parallel::DistributedTriangulationBase<dim> &
@@ -204,6 +210,9 @@ namespace dualcontact
       parallel::distributed::SolutionTransfer<dim, Vector> transfer(
         dof_handler);
       transfer.prepare_for_serialization(pointers);
+      // the mixed formulation's pressure, on its own DoFs, after them
+      if (mixed)
+        mixed->prepare_checkpoint();
       forest_of(triangulation).save(building + "/mesh");
     }
     MPI_Barrier(mpi_communicator); // (every rank's part written)
@@ -333,6 +342,8 @@ namespace dualcontact
     try
       {
         transfer.deserialize(pointers);
+        if (mixed)
+          mixed->read_checkpoint();
       }
     catch (const std::exception &exception)
       {
@@ -418,7 +429,8 @@ namespace dualcontact
     // this scene's checkpoint, on as many ranks
     const std::string difference = first_difference(parameters.parameter_file,
                                                     saved.str(),
-                                                    entries_free_on_resume);
+                                                    entries_free_on_resume,
+                                                    entries_compared_first);
     if (!difference.empty())
       throw InputError("The checkpoint in '" + directory +
                          "' is of another scene: " + difference +

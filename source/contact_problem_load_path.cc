@@ -282,7 +282,8 @@ namespace dualcontact
                          mapping,
                          dof_handler,
                          solution,
-                         parameters.material);
+                         parameters.material,
+                         mixed.get());
     if (!probes.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       probes.append_step_csv(parameters.output.directory + "/probes_steps.csv");

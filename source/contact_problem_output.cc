@@ -66,7 +66,8 @@ namespace dualcontact
       }
 
     // the probes: all cycles so far
-    probes.evaluate(cycle, mapping, dof_handler, solution, parameters.material);
+    probes.evaluate(
+      cycle, mapping, dof_handler, solution, parameters.material, mixed.get());
     if (root && !probes.empty())
       probes.write_csv(directory + "/probes.csv");
 
@@ -117,12 +118,9 @@ namespace dualcontact
     // live on Gamma_C only, in the boundary output below.
     const TrilinosWrappers::MPI::Vector pressure =
       mixed ? mixed->ghosted_pressure() : TrilinosWrappers::MPI::Vector();
-    typename StressPostprocessor<dim>::PressureAt pressure_at;
-    if (mixed)
-      pressure_at = [&](const auto &cell, const auto &points) {
-        return mixed->values_at(mapping, pressure, cell, points);
-      };
-    StressPostprocessor<dim> stress(parameters.material, pressure_at);
+    StressPostprocessor<dim> stress(parameters.material,
+                                    mixed ? mixed->pressure_at(mapping) :
+                                            PressureAt<dim>());
     DataOut<dim>             data_out;
     data_out.set_flags(flags);
     data_out.attach_dof_handler(dof_handler);

@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 
 namespace dualcontact
 {
@@ -642,6 +643,43 @@ namespace dualcontact
     transfer.reset();
     transfer_source.clear();
     hanging.distribute(pressure);
+  }
+
+  template <int dim>
+  void
+  MixedBulk<dim>::prepare_checkpoint()
+  {
+    // (the source must live until the forest is saved)
+    transfer_source = ghosted_pressure();
+    checkpoint_transfer =
+      std::make_unique<parallel::distributed::
+                         SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>(
+        dof_handler);
+    checkpoint_transfer->prepare_for_serialization(transfer_source);
+  }
+
+  template <int dim>
+  void
+  MixedBulk<dim>::read_checkpoint()
+  {
+    transfer_source.clear();
+    checkpoint_transfer =
+      std::make_unique<parallel::distributed::
+                         SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>(
+        dof_handler);
+    checkpoint_transfer->deserialize(pressure);
+    checkpoint_transfer.reset();
+  }
+
+  template <int dim>
+  PressureAt<dim>
+  MixedBulk<dim>::pressure_at(const Mapping<dim> &mapping) const
+  {
+    const auto p =
+      std::make_shared<const TrilinosWrappers::MPI::Vector>(ghosted_pressure());
+    return [this, &mapping, p](const auto &cell, const auto &points) {
+      return values_at(mapping, *p, cell, points);
+    };
   }
 
   template class MixedBulk<2>;

@@ -353,19 +353,6 @@ namespace dualcontact
           mixed_pair_refusal(geometry.cell_kind, discretization.degree);
         if (!refusal.empty())
           throw InputError(refusal, exit_inconsistent);
-        // what does not carry the pressure field yet (doc/mixed.md)
-        if (!output.probe_points.empty())
-          throw InputError("<Output/Probe points> with <Material/"
-                           "Formulation> = mixed: the probes do not read "
-                           "the pressure field yet, and their stress would "
-                           "lack it. Read the stress from the vtu.",
-                           exit_inconsistent);
-        if (output.checkpoint_interval > 0)
-          throw InputError("<Output/Checkpoint interval> with <Material/"
-                           "Formulation> = mixed: the checkpoints do not "
-                           "carry the pressure field yet, so a resumed path "
-                           "would not give the same numbers. Set it to 0.",
-                           exit_inconsistent);
       }
   }
 

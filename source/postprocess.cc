@@ -42,15 +42,14 @@ namespace dualcontact
         Tensor<2, dim> grad;
         for (unsigned int d = 0; d < dim; ++d)
           grad[d] = inputs.solution_gradients[p][d];
-        SymmetricTensor<2, dim> sigma = stress_from_gradient(grad, lambda, mu);
-        for (unsigned int i = 0; i < dim; ++i)
-          sigma[i][i] -= p_values[p];
+        const SymmetricTensor<2, dim> sigma =
+          stress_from_gradient(grad, lambda, mu, p_values[p]);
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             computed_quantities[p](i * dim + j) = sigma[i][j];
         computed_quantities[p](dim * dim) =
           von_mises_stress(sigma,
-                           out_of_plane_stress(grad, lambda) - p_values[p]);
+                           out_of_plane_stress(grad, lambda, p_values[p]));
       }
   }
 

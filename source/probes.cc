@@ -6,6 +6,7 @@
 #include <deal.II/numerics/vector_tools_evaluate.h>
 
 #include <dualcontact/input_error.h>
+#include <dualcontact/mixed_bulk.h>
 #include <dualcontact/postprocess.h>
 #include <dualcontact/probes.h>
 #include <dualcontact/report.h>
@@ -237,7 +238,9 @@ namespace dualcontact
   } // namespace
 
   template <int dim>
-  Probes<dim>::Probes(const std::vector<std::vector<double>> &coordinates)
+  Probes<dim>::Probes(const std::vector<std::vector<double>> &coordinates,
+                      const bool                              with_pressure)
+      : with_pressure(with_pressure)
   {
     // the number of coordinates is checked with the other entries
     // (Parameters::check_consistency)
@@ -276,8 +279,12 @@ namespace dualcontact
   Probes<dim>::measure(const Mapping<dim>                  &mapping,
                        const DoFHandler<dim>               &dof_handler,
                        const TrilinosWrappers::MPI::Vector &solution,
-                       const MaterialParameters            &material) const
+                       const MaterialParameters            &material,
+                       const MixedBulk<dim>                *mixed) const
   {
+    Assert(with_pressure == (mixed != nullptr),
+           ExcMessage("The probes of the mixed formulation read its "
+                      "pressure field, and only they."));
     // a point outside the body within the tolerance is evaluated at the
     // nearest point of the body; one farther outside is not found
     const std::vector<Location<dim>> locations =
@@ -292,6 +299,12 @@ namespace dualcontact
       mapping, dof_handler, solution, where, cache);
     const auto grad =
       VectorTools::point_gradients<dim>(cache, dof_handler, solution);
+    // the mixed formulation's p, on its own DoFs of the same mesh
+    const std::vector<double> pressure =
+      mixed ? VectorTools::point_values<1>(cache,
+                                           mixed->dofs(),
+                                           mixed->ghosted_pressure()) :
+              std::vector<double>(points.size(), 0.);
     // the material id of (the first of) the cells that hold each point
     std::vector<double>       ids, buffer;
     const Triangulation<dim> &triangulation = dof_handler.get_triangulation();
@@ -326,8 +339,11 @@ namespace dualcontact
               material.of(static_cast<types::material_id>(ids[first[i]]));
             const double lambda = here.block_lambda(), mu = here.mu();
             value.displacement = u[i];
-            value.stress       = stress_from_gradient(grad[i], lambda, mu);
-            value.stress_zz    = out_of_plane_stress(grad[i], lambda);
+            value.pressure     = pressure[i];
+            value.stress =
+              stress_from_gradient(grad[i], lambda, mu, value.pressure);
+            value.stress_zz =
+              out_of_plane_stress(grad[i], lambda, value.pressure);
             value.von_mises = von_mises_stress(value.stress, value.stress_zz);
           }
         else // a later mesh lost the point (a concave curved boundary)
@@ -337,6 +353,7 @@ namespace dualcontact
             value.stress[0][0]    = nan;
             value.stress_zz       = nan;
             value.von_mises       = nan;
+            value.pressure        = nan;
           }
       }
     return values;
@@ -348,11 +365,13 @@ namespace dualcontact
                         const Mapping<dim>                  &mapping,
                         const DoFHandler<dim>               &dof_handler,
                         const TrilinosWrappers::MPI::Vector &solution,
-                        const MaterialParameters            &material)
+                        const MaterialParameters            &material,
+                        const MixedBulk<dim>                *mixed)
   {
     if (points.empty())
       return;
-    for (Value &value : measure(mapping, dof_handler, solution, material))
+    for (Value &value :
+         measure(mapping, dof_handler, solution, material, mixed))
       {
         value.cycle = cycle;
         all_values.push_back(value);
@@ -366,11 +385,13 @@ namespace dualcontact
                              const Mapping<dim>                  &mapping,
                              const DoFHandler<dim>               &dof_handler,
                              const TrilinosWrappers::MPI::Vector &solution,
-                             const MaterialParameters            &material)
+                             const MaterialParameters            &material,
+                             const MixedBulk<dim>                *mixed)
   {
     if (points.empty())
       return;
-    for (Value &value : measure(mapping, dof_handler, solution, material))
+    for (Value &value :
+         measure(mapping, dof_handler, solution, material, mixed))
       {
         value.step = step;
         value.time = time;
@@ -380,7 +401,7 @@ namespace dualcontact
 
   template <int dim>
   void
-  Probes<dim>::write_header(std::ostream &csv)
+  Probes<dim>::write_header(std::ostream &csv) const
   {
     static const char axis[] = "xyz";
     csv << "probe";
@@ -394,12 +415,12 @@ namespace dualcontact
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i + 1; j < dim; ++j)
         csv << ",sigma_" << axis[i] << axis[j];
-    csv << ",von_mises\n";
+    csv << ",von_mises" << (with_pressure ? ",pressure" : "") << '\n';
   }
 
   template <int dim>
   void
-  Probes<dim>::write_row(std::ostream &csv, const Value &v)
+  Probes<dim>::write_row(std::ostream &csv, const Value &v) const
   {
     csv << v.probe + 1;
     for (unsigned int d = 0; d < dim; ++d)
@@ -413,7 +434,10 @@ namespace dualcontact
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i + 1; j < dim; ++j)
         csv << ',' << tidy(v.stress[i][j]);
-    csv << ',' << tidy(v.von_mises) << '\n';
+    csv << ',' << tidy(v.von_mises);
+    if (with_pressure)
+      csv << ',' << tidy(v.pressure);
+    csv << '\n';
   }
 
   template <int dim>

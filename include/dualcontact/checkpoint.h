@@ -128,12 +128,14 @@ namespace dualcontact
    * parameter listings in ParameterHandler's PRM format, or that only one
    * of them has, as "<Subsection/Entry> is 'a' in the scene and 'b' in the
    * checkpoint"; empty if they agree. The entries in `ignored`
-   * ("Subsection/Entry") do not count.
+   * ("Subsection/Entry") do not count; those in `first` are compared
+   * before the others, in their order.
    */
   std::string
-  first_difference(const std::string           &now,
-                   const std::string           &saved,
-                   const std::set<std::string> &ignored);
+  first_difference(const std::string              &now,
+                   const std::string              &saved,
+                   const std::set<std::string>    &ignored,
+                   const std::vector<std::string> &first = {});
 } // namespace dualcontact
 
 #endif

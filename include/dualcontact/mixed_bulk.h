@@ -13,6 +13,7 @@
 
 #include <deal.II/base/index_set.h>
 
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria_base.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -29,6 +30,7 @@
 #include <dualcontact/cell_kind.h>
 #include <dualcontact/field_transfer.h>
 #include <dualcontact/material_parameters.h>
+#include <dualcontact/postprocess.h>
 #include <dualcontact/pressure_coupling.h>
 
 #include <memory>
@@ -125,6 +127,18 @@ namespace dualcontact
     void
     finish_transfer();
 
+    /**
+     * Attach p to the cells for a checkpoint: after the displacement's
+     * fields, before the forest is saved. read_checkpoint(), after setup()
+     * on the mesh loaded from it and after the displacement's fields are
+     * read, sets p as it was written (doc/theory.md §11, "Restart").
+     * Throws what deal.II throws on data it cannot read.
+     */
+    void
+    prepare_checkpoint();
+    void
+    read_checkpoint();
+
     /** The pressure element's DoFs on the mesh. */
     const DoFHandler<dim> &
     dofs() const
@@ -145,6 +159,14 @@ namespace dualcontact
     /** p with the ghost entries the output and the probes read. */
     TrilinosWrappers::MPI::Vector
     ghosted_pressure() const;
+
+    /**
+     * values_at() of the present p as a function of a cell and real
+     * points, which keeps its own ghosted copy of p (the stress of the
+     * output and of the refinement indicator).
+     */
+    PressureAt<dim>
+    pressure_at(const Mapping<dim> &mapping) const;
 
     /** The owned pressure, for a transfer or a checkpoint to set. */
     TrilinosWrappers::MPI::Vector pressure;
@@ -180,9 +202,13 @@ namespace dualcontact
     TrilinosWrappers::MPI::Vector    lifting, increment;
     // h = B v + b_p - C p at the v of the last solve
     TrilinosWrappers::MPI::Vector constraint_residual;
-    // p on the mesh before a refinement, and its transfer
+    // p on the mesh before a refinement, and its transfer; p attached to
+    // a checkpoint's cells
     TrilinosWrappers::MPI::Vector       transfer_source;
     std::unique_ptr<FieldTransfer<dim>> transfer;
+    std::unique_ptr<parallel::distributed::
+                      SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>
+      checkpoint_transfer;
   };
 } // namespace dualcontact
 

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -27,28 +28,59 @@ namespace dualcontact
   using namespace dealii;
 
   /**
-   * The Cauchy stress sigma = lambda tr(eps) I + 2 mu eps, eps the symmetric
-   * part of the displacement gradient.
+   * The pressure p of the mixed formulation at real points of a cell
+   * (MixedBulk::values_at()); empty in displacements.
+   */
+  template <int dim>
+  using PressureAt = std::function<std::vector<double>(
+    const typename Triangulation<dim>::active_cell_iterator &,
+    const std::vector<Point<dim>> &)>;
+
+  /**
+   * The Cauchy stress sigma = lambda tr(eps) I + 2 mu eps - p I. In
+   * displacements p = 0; in the mixed formulation lambda is -2 mu/3
+   * (MaterialParameters::block_lambda()), so that sigma = 2 mu dev eps - p I
+   * with p the pressure field (doc/mixed.md).
+   */
+  template <int dim>
+  inline SymmetricTensor<2, dim>
+  stress_from_strain(const SymmetricTensor<2, dim> &eps,
+                     const double                   lambda,
+                     const double                   mu,
+                     const double                   pressure = 0.)
+  {
+    SymmetricTensor<2, dim> sigma =
+      lambda * trace(eps) * unit_symmetric_tensor<dim>() + 2. * mu * eps;
+    for (unsigned int i = 0; i < dim; ++i)
+      sigma[i][i] -= pressure;
+    return sigma;
+  }
+
+  /**
+   * stress_from_strain() of the symmetric part eps of the displacement
+   * gradient.
    */
   template <int dim>
   inline SymmetricTensor<2, dim>
   stress_from_gradient(const Tensor<2, dim> &gradient,
                        const double          lambda,
-                       const double          mu)
+                       const double          mu,
+                       const double          pressure = 0.)
   {
-    const SymmetricTensor<2, dim> eps = symmetrize(gradient);
-    return lambda * trace(eps) * unit_symmetric_tensor<dim>() + 2. * mu * eps;
+    return stress_from_strain(symmetrize(gradient), lambda, mu, pressure);
   }
 
   /**
-   * The out-of-plane stress of plane strain, sigma_zz = lambda tr(eps) (2D;
-   * in 3D it is a component of the stress and this returns 0).
+   * The out-of-plane stress of plane strain, sigma_zz = lambda tr(eps) - p
+   * (2D; in 3D it is a component of the stress and this returns 0).
    */
   template <int dim>
   inline double
-  out_of_plane_stress(const Tensor<2, dim> &gradient, const double lambda)
+  out_of_plane_stress(const Tensor<2, dim> &gradient,
+                      const double          lambda,
+                      const double          pressure = 0.)
   {
-    return dim == 2 ? lambda * trace(gradient) : 0.;
+    return dim == 2 ? lambda * trace(gradient) - pressure : 0.;
   }
 
   /**
@@ -82,9 +114,7 @@ namespace dualcontact
      * the stress is then 2 mu dev eps(u) - p I (material_parameters.h,
      * block_lambda()). Empty in displacements.
      */
-    using PressureAt = std::function<std::vector<double>(
-      const typename Triangulation<dim>::active_cell_iterator &,
-      const std::vector<Point<dim>> &)>;
+    using PressureAt = dualcontact::PressureAt<dim>;
 
     explicit StressPostprocessor(const MaterialParameters &material,
                                  PressureAt pressure = PressureAt());

@@ -1,6 +1,7 @@
-// Probe points (<Output/Probe points>): the displacement and the stress at
-// given points of the body, for every cycle, written to probes.csv, and for
-// every step of a load path, written to probes_steps.csv.
+// Probe points (<Output/Probe points>): the displacement and the stress
+// (and in the mixed formulation the pressure) at given points of the body,
+// for every cycle, written to probes.csv, and for every step of a load
+// path, written to probes_steps.csv.
 #ifndef dualcontact_probes_h
 #define dualcontact_probes_h
 
@@ -25,6 +26,9 @@ namespace dualcontact
 {
   using namespace dealii;
 
+  template <int dim>
+  class MixedBulk; // mixed_bulk.h
+
   /**
    * The probe points of a run and the values found at them. The points are
    * located in the distributed mesh with
@@ -48,10 +52,16 @@ namespace dualcontact
       SymmetricTensor<2, dim> stress;
       double                  stress_zz = 0.; // 2D: plane strain lambda tr(eps)
       double                  von_mises = 0.;
+      double                  pressure  = 0.; // the mixed formulation's p
     };
 
-    /** The points of <Output/Probe points> (each with dim coordinates). */
-    explicit Probes(const std::vector<std::vector<double>> &coordinates);
+    /**
+     * The points of <Output/Probe points> (each with dim coordinates);
+     * `with_pressure` in the mixed formulation: the stress takes the
+     * pressure field, and the files have its column.
+     */
+    explicit Probes(const std::vector<std::vector<double>> &coordinates,
+                    bool with_pressure = false);
 
     bool
     empty() const
@@ -82,18 +92,21 @@ namespace dualcontact
     /**
      * The displacement and the stress sigma = lambda tr(eps) I + 2 mu eps at
      * every point (averaged over the cells that share a point on their
-     * common face), added to values() as the rows of `cycle`. A point that
-     * no cell holds but that lies within the tolerance of check_inside() is
-     * evaluated at the nearest point of the mesh, found over all ranks; one
-     * farther outside (a mesh that lost the point) gets NaN. `solution` is
-     * ghosted. Collective.
+     * common face), added to values() as the rows of `cycle`; in the mixed
+     * formulation (`mixed` not null, as `with_pressure`) the pressure p at
+     * the point, averaged alike, and sigma = 2 mu dev eps - p I. A point
+     * that no cell holds but that lies within the tolerance of
+     * check_inside() is evaluated at the nearest point of the mesh, found
+     * over all ranks; one farther outside (a mesh that lost the point) gets
+     * NaN. `solution` is ghosted. Collective.
      */
     void
     evaluate(const unsigned int                   cycle,
              const Mapping<dim>                  &mapping,
              const DoFHandler<dim>               &dof_handler,
              const TrilinosWrappers::MPI::Vector &solution,
-             const MaterialParameters            &material);
+             const MaterialParameters            &material,
+             const MixedBulk<dim>                *mixed = nullptr);
 
     /**
      * The same at a step of a load path (on the mesh of that step), added
@@ -105,7 +118,8 @@ namespace dualcontact
                   const Mapping<dim>                  &mapping,
                   const DoFHandler<dim>               &dof_handler,
                   const TrilinosWrappers::MPI::Vector &solution,
-                  const MaterialParameters            &material);
+                  const MaterialParameters            &material,
+                  const MixedBulk<dim>                *mixed = nullptr);
 
     /** Every value of every cycle so far, by cycle, then by probe. */
     const std::vector<Value> &
@@ -124,7 +138,8 @@ namespace dualcontact
     /**
      * Write values() as CSV: one row per cycle and probe, the columns
      * cycle, probe, x, y, (z), u_x, u_y, (u_z), sigma_xx, sigma_yy,
-     * sigma_zz, sigma_xy, (sigma_xz, sigma_yz), von_mises. Call on one rank.
+     * sigma_zz, sigma_xy, (sigma_xz, sigma_yz), von_mises, and with the
+     * pressure field pressure. Call on one rank.
      */
     void
     write_csv(const std::string &filename) const;
@@ -153,15 +168,17 @@ namespace dualcontact
     measure(const Mapping<dim>                  &mapping,
             const DoFHandler<dim>               &dof_handler,
             const TrilinosWrappers::MPI::Vector &solution,
-            const MaterialParameters            &material) const;
+            const MaterialParameters            &material,
+            const MixedBulk<dim>                *mixed) const;
 
     /** The columns from probe on: their header, or one value's row. */
-    static void
-    write_header(std::ostream &csv);
-    static void
-    write_row(std::ostream &csv, const Value &value);
+    void
+    write_header(std::ostream &csv) const;
+    void
+    write_row(std::ostream &csv, const Value &value) const;
 
     std::vector<Point<dim>> points;
+    bool                    with_pressure;
     std::vector<Value>      all_values;
     std::vector<Value>      all_step_values;
     std::size_t             step_values_written = 0; // by append_step_csv

@@ -25,6 +25,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dualcontact/contact_set.h>
+#include <dualcontact/postprocess.h>
 #include <dualcontact/refinement_indicator_kind.h>
 
 #include <functional>
@@ -54,6 +55,10 @@ namespace dualcontact
     // the nodal multiplier field (l1, l2_1, ..) on Gamma_C, ghosted, with
     // the hanging nodes filled (ContactSet::write_fields); computed on call
     std::function<TrilinosWrappers::MPI::Vector()> multipliers;
+    // the pressure field of the mixed formulation at real points of a
+    // cell, the stress then 2 mu dev eps(u) - p I (stress_from_strain());
+    // empty in displacements
+    PressureAt<dim> pressure;
   };
 
   /** The indicator of the scene's <Refinement/Strategy>. */

@@ -11,6 +11,7 @@
 
 #include <dualcontact/discretization.h>
 #include <dualcontact/parameters.h>
+#include <dualcontact/postprocess.h>
 #include <dualcontact/refinement.h>
 #include <dualcontact/refinement_indicator.h>
 
@@ -21,12 +22,38 @@ namespace dualcontact
   namespace
   {
     /**
+     * sigma(u_h) at the quadrature points of `fe_face`, reinitialised on a
+     * face of `cell` (of the material `here`): lambda tr(eps) I + 2 mu eps,
+     * and in the mixed formulation 2 mu dev eps - p I with the pressure
+     * field at the points (stress_from_strain(), doc/mixed.md).
+     */
+    template <int dim>
+    std::vector<SymmetricTensor<2, dim>>
+    face_stresses(const IndicatorInput<dim>                            &input,
+                  const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  const MaterialParameters                             &here,
+                  const FEFaceValues<dim>                              &fe_face)
+    {
+      std::vector<SymmetricTensor<2, dim>> stress(fe_face.n_quadrature_points);
+      fe_face[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(
+        input.solution, stress);
+      const std::vector<double> p =
+        input.pressure ? input.pressure(cell, fe_face.get_quadrature_points()) :
+                         std::vector<double>(stress.size(), 0.);
+      for (unsigned int q = 0; q < stress.size(); ++q)
+        stress[q] =
+          stress_from_strain(stress[q], here.block_lambda(), here.mu(), p[q]);
+      return stress;
+    }
+
+    /**
      * Adds the Gamma_C term to Kelly's `indicator` (in squares): for every
      * owned cell and each of its faces F on the contact ids,
      *   eta_F^2 = weight h_F / E^2 int_F |sigma(u_h) n_F + l1 n + l2 . t|^2,
      * the residual of the traction condition sigma(u) n_F = -(l1 n + l2 t)
      * that the multipliers impose (n = the contact set's normal, t its
-     * tangents). Dividing by E makes it a strain, as Kelly's jump of the
+     * tangents; sigma(u_h) of face_stresses(), with -p n_F in the mixed
+     * formulation). Dividing by E makes it a strain, as Kelly's jump of the
      * gradient is, so the weight has no units.
      */
     template <int dim>
@@ -36,13 +63,12 @@ namespace dualcontact
                      const double                         weight,
                      Vector<float>                       &indicator)
     {
-      const Mapping<dim>                  &mapping     = input.mapping;
-      const DoFHandler<dim>               &dof_handler = input.dof_handler;
-      const TrilinosWrappers::MPI::Vector &solution    = input.solution;
-      const ContactSet<dim>               &contact     = input.contact;
-      const std::set<types::boundary_id>  &contact_ids = input.contact_ids;
-      const MaterialParameters            &material = input.parameters.material;
-      const FiniteElement<dim>            &fe       = dof_handler.get_fe();
+      const Mapping<dim>                 &mapping     = input.mapping;
+      const DoFHandler<dim>              &dof_handler = input.dof_handler;
+      const ContactSet<dim>              &contact     = input.contact;
+      const std::set<types::boundary_id> &contact_ids = input.contact_ids;
+      const MaterialParameters           &material = input.parameters.material;
+      const FiniteElement<dim>           &fe       = dof_handler.get_fe();
       const Quadrature<dim - 1> quadrature = face_quadrature(fe, fe.degree + 1);
       FEFaceValues<dim>         fe_face(mapping,
                                 fe,
@@ -50,22 +76,17 @@ namespace dualcontact
                                 update_values | update_gradients |
                                   update_normal_vectors | update_JxW_values |
                                   update_quadrature_points);
-      const FEValuesExtractors::Vector     displacement(0);
-      std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
-      std::vector<Tensor<1, dim>>          lambda(quadrature.size());
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<1, dim>>      lambda(quadrature.size());
       const auto &pairs = input.parameters.boundary.contact_pairs;
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            // the cell's material (<Material/Materials by id>); in the
-            // mixed formulation the stress of u alone, its deviatoric part
-            // (the term leaves the pressure field out, doc/mixed.md)
-            const MaterialParameters here   = material.of(cell->material_id());
-            const double             E      = here.youngs_modulus;
-            const double             lame_l = here.block_lambda();
-            const double             lame_m = here.mu();
-            double                   sum    = 0.;
+            // the cell's material (<Material/Materials by id>)
+            const MaterialParameters here = material.of(cell->material_id());
+            const double             E    = here.youngs_modulus;
+            double                   sum  = 0.;
             for (const unsigned int f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
                   contact_ids.count(cell->face(f)->boundary_id()))
@@ -75,25 +96,21 @@ namespace dualcontact
                   // a pair's slave side along the body's own
                   const bool paired =
                     pairs.count(cell->face(f)->boundary_id()) > 0;
-                  fe_face[displacement].get_function_symmetric_gradients(
-                    solution, strain);
+                  const std::vector<SymmetricTensor<2, dim>> stress =
+                    face_stresses(input, cell, here, fe_face);
                   fe_face[displacement].get_function_values(multipliers,
                                                             lambda);
                   double integral = 0.;
                   for (const unsigned int q :
                        fe_face.quadrature_point_indices())
                     {
-                      const SymmetricTensor<2, dim> stress =
-                        lame_l * trace(strain[q]) *
-                          unit_symmetric_tensor<dim>() +
-                        2. * lame_m * strain[q];
                       // lambda[q]: (l1, l2_1, .., l2_{dim-1}) interpolated
                       const Tensor<1, dim> nu = fe_face.normal_vector(q);
                       const auto [n, t] =
                         paired ? std::make_pair(nu, tangent_basis(nu)) :
                                  contact.basis_at(fe_face.quadrature_point(q));
                       Tensor<1, dim> residual =
-                        stress * fe_face.normal_vector(q) + lambda[q][0] * n;
+                        stress[q] * fe_face.normal_vector(q) + lambda[q][0] * n;
                       for (unsigned int k = 0; k < dim - 1; ++k)
                         residual += lambda[q][k + 1] * t[k];
                       integral += residual.norm_square() * fe_face.JxW(q);
@@ -197,10 +214,10 @@ namespace dualcontact
                                 fe,
                                 quadrature,
                                 update_values | update_gradients |
-                                  update_normal_vectors | update_JxW_values);
-      const FEValuesExtractors::Vector     displacement(0);
-      std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
-      std::vector<Tensor<1, dim>>          traction(quadrature.size());
+                                  update_normal_vectors | update_JxW_values |
+                                  update_quadrature_points);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<1, dim>>      traction(quadrature.size());
       for (const auto &cell : input.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -212,22 +229,16 @@ namespace dualcontact
                   master_ids.count(cell->face(f)->boundary_id()))
                 {
                   fe_face.reinit(cell, f);
-                  fe_face[displacement].get_function_symmetric_gradients(
-                    input.solution, strain);
+                  const std::vector<SymmetricTensor<2, dim>> stress =
+                    face_stresses(input, cell, here, fe_face);
                   fe_face[displacement].get_function_values(tau, traction);
                   double integral = 0.;
                   for (const unsigned int q :
                        fe_face.quadrature_point_indices())
-                    {
-                      const SymmetricTensor<2, dim> stress =
-                        here.block_lambda() * trace(strain[q]) *
-                          unit_symmetric_tensor<dim>() +
-                        2. * here.mu() * strain[q];
-                      integral +=
-                        (stress * fe_face.normal_vector(q) - traction[q])
-                          .norm_square() *
-                        fe_face.JxW(q);
-                    }
+                    integral +=
+                      (stress[q] * fe_face.normal_vector(q) - traction[q])
+                        .norm_square() *
+                      fe_face.JxW(q);
                   sum += cell->face(f)->diameter() * integral /
                          (here.youngs_modulus * here.youngs_modulus);
                 }
@@ -271,7 +282,9 @@ namespace dualcontact
       "contact",
       {"adds to Kelly's indicator a term on Gamma_C: the residual of the "
        "contact tractions, h_F/E^2 int_F |sigma(u_h) n + l1 n + l2 t|^2 (n "
-       "the outward normal, t the tangent), which is large where the "
+       "the outward normal, t the tangent; with <Material/Formulation> = "
+       "mixed, sigma(u_h) = 2 mu dev eps(u_h) - p_h I), which is large where "
+       "the "
        "discrete tractions disagree with the multipliers: the edges of the "
        "contact zone and the stick/slip boundary. On a contact pair the "
        "master faces get the same term with the tractions that the slave's "
